@@ -1,0 +1,136 @@
+//! The merged topology descriptor of a piece sequence predicts exactly the
+//! components and holes of the assembled geometry, counted independently
+//! (polygon union, then counting rings).
+
+use proptest::prelude::*;
+use tracery_core::{
+    BUILTIN_NAMES, DVec2, PieceSet, Polygon, Region, SliceOptions, SlicingMode, TopologyDescriptor, builtin,
+    count_topology,
+};
+
+/// Lays the pieces out left to right with a gap between them, and bridges
+/// each gap with one quadrilateral per matched portal. Portals on both sides
+/// are ordered top to bottom, so the bridges never cross; this realises the
+/// joins the descriptors assume without any stitching code.
+fn assemble(set: &PieceSet, sequence: &[usize]) -> Region {
+    let gap = 0.25 * set.exemplar_height;
+    let overlap = 1e-3 * gap;
+    let mut polygons = Vec::new();
+    let mut x = 0.0;
+    for (k, &i) in sequence.iter().enumerate() {
+        let piece = &set.pieces[i];
+        let shift = DVec2::new(x - piece.u_start, 0.0);
+        polygons.extend(piece.region.translated(shift).polygons);
+        let right_x = x + piece.width;
+        if let Some(&j) = sequence.get(k + 1) {
+            let next = &set.pieces[j];
+            for (a, b) in piece.right.iter().zip(&next.left) {
+                let (x0, x1) = (right_x - overlap, right_x + gap + overlap);
+                polygons.push(Polygon {
+                    outer: vec![
+                        DVec2::new(x0, a.bottom),
+                        DVec2::new(x1, b.bottom),
+                        DVec2::new(x1, b.top),
+                        DVec2::new(x0, a.top),
+                    ],
+                    holes: vec![],
+                });
+            }
+        }
+        x = right_x + gap;
+    }
+    Region::new(polygons)
+}
+
+/// A random sequence of compatible pieces, from a left end or from anywhere.
+fn random_sequence(set: &PieceSet, choices: &[usize], from_start: bool) -> Vec<usize> {
+    let n = set.len();
+    let starts: Vec<usize> =
+        if from_start { (0..n).filter(|&i| set.pieces[i].left.is_empty()).collect() } else { (0..n).collect() };
+    let mut sequence = vec![starts[choices[0] % starts.len()]];
+    for &c in &choices[1..] {
+        let last = *sequence.last().unwrap();
+        let next: Vec<usize> = (0..n).filter(|&j| set.pair(last, j).is_some()).collect();
+        if next.is_empty() {
+            break;
+        }
+        sequence.push(next[c % next.len()]);
+    }
+    sequence
+}
+
+fn merged(set: &PieceSet, sequence: &[usize]) -> TopologyDescriptor {
+    sequence[1..].iter().fold(set.pieces[sequence[0]].descriptor.clone(), |d, &i| {
+        d.join(&set.pieces[i].descriptor).expect("compatible pieces join")
+    })
+}
+
+fn piece_sets() -> Vec<(String, PieceSet)> {
+    let mut sets = Vec::new();
+    for name in BUILTIN_NAMES {
+        let exemplar = builtin(name).unwrap();
+        sets.push((format!("{name}/topology"), PieceSet::new(&exemplar, &SliceOptions::default()).unwrap()));
+        let mut uniform = SliceOptions::default();
+        uniform.mode = SlicingMode::Uniform { cuts: 9 };
+        sets.push((format!("{name}/uniform"), PieceSet::new(&exemplar, &uniform).unwrap()));
+    }
+    sets
+}
+
+#[test]
+fn each_piece_descriptor_matches_its_geometry() {
+    for (name, set) in piece_sets() {
+        for piece in &set.pieces {
+            let t = count_topology(&piece.region);
+            let d = &piece.descriptor;
+            assert_eq!(t.components as u32, d.components(), "{name} piece {}", piece.index);
+            assert_eq!(t.holes as u32, d.holes(), "{name} piece {}", piece.index);
+        }
+    }
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig { cases: 96, ..ProptestConfig::default() })]
+
+    #[test]
+    fn merged_descriptor_predicts_assembled_topology(
+        which in 0usize..16,
+        choices in proptest::collection::vec(0usize..1000, 2..14),
+        from_start in any::<bool>(),
+    ) {
+        let sets = piece_sets_cached();
+        let (name, set) = &sets[which % sets.len()];
+        let sequence = random_sequence(set, &choices, from_start);
+        let predicted = merged(set, &sequence);
+        let counted = count_topology(&assemble(set, &sequence));
+        prop_assert_eq!(
+            (counted.components as u32, counted.holes as u32),
+            (predicted.components(), predicted.holes()),
+            "{} sequence {:?}", name, sequence
+        );
+    }
+}
+
+fn piece_sets_cached() -> &'static [(String, PieceSet)] {
+    static SETS: std::sync::OnceLock<Vec<(String, PieceSet)>> = std::sync::OnceLock::new();
+    SETS.get_or_init(piece_sets)
+}
+
+#[test]
+fn finished_open_sequences_from_the_solver_agree_with_geometry() {
+    use tracery_core::{Control, SolveOptions, Target, solve};
+    for (name, set) in piece_sets_cached() {
+        for components in [Target::Exactly(1), Target::Any] {
+            let mut options = SolveOptions::new(3.0 * set.exemplar_width);
+            options.components = components;
+            let Ok(solution) = solve(set, &options, &Control::default()) else { continue };
+            let counted = count_topology(&assemble(set, &solution.pieces));
+            assert_eq!(
+                (counted.components as u32, counted.holes as u32),
+                (solution.components, solution.holes),
+                "{name} {components:?}"
+            );
+            assert!(components.accepts(counted.components as u32), "{name}");
+        }
+    }
+}

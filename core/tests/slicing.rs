@@ -1,0 +1,73 @@
+//! Cutting exemplars into pieces: uniform and topology-driven slicing, thin features.
+
+use tracery_core::{
+    BUILTIN_NAMES, PieceSet, SliceError, SliceOptions, SlicingMode, builtin, cut_positions, portals_at, topology_events,
+};
+
+#[test]
+fn uniform_slicing_cuts_evenly() {
+    let exemplar = builtin("lace").unwrap();
+    let mut options = SliceOptions::default();
+    options.mode = SlicingMode::Uniform { cuts: 7 };
+    let set = PieceSet::new(&exemplar, &options).unwrap();
+    assert_eq!(set.len(), 8);
+    for piece in &set.pieces {
+        assert!((piece.width - exemplar.width() / 8.0).abs() < 1e-3 * exemplar.width());
+    }
+    let total: f64 = set.pieces.iter().map(|p| p.region.area()).sum();
+    assert!((total - exemplar.region.area()).abs() < 1e-6 * exemplar.region.area());
+}
+
+#[test]
+fn topology_slicing_puts_one_event_group_in_each_piece() {
+    for name in BUILTIN_NAMES {
+        let exemplar = builtin(name).unwrap();
+        let options = SliceOptions::default();
+        let set = PieceSet::new(&exemplar, &options).unwrap();
+        assert!(set.len() >= 10, "{name}: {} pieces", set.len());
+        let events = topology_events(&exemplar.region);
+        let grouping = options.event_grouping * exemplar.height();
+        for piece in &set.pieces {
+            let inside: Vec<f64> =
+                events.iter().copied().filter(|&e| e >= piece.u_start && e <= piece.u_end()).collect();
+            assert!(!inside.is_empty(), "{name}: piece {} holds no topology event", piece.index);
+            // All events inside one piece belong to one group.
+            let span = inside.last().unwrap() - inside.first().unwrap();
+            assert!(span <= grouping + 1e-9, "{name}: piece {} spans events over {span}", piece.index);
+        }
+        // Portals at both sides of every cut agree between neighbours.
+        for pair in set.pieces.windows(2) {
+            assert_eq!(pair[0].right, pair[1].left, "{name}");
+        }
+        assert!(set.pieces.first().unwrap().left.is_empty() && set.pieces.last().unwrap().right.is_empty());
+    }
+}
+
+#[test]
+fn thin_feature_filter_drops_weak_cuts() {
+    let exemplar = builtin("filigree").unwrap();
+    let all = cut_positions(&exemplar, &SliceOptions::default()).unwrap();
+    let narrowest = |c: f64| portals_at(&exemplar.region, c).iter().map(|p| p.width()).fold(f64::INFINITY, f64::min);
+    // The hairline bridges are 0.8 units thick.
+    assert!(all.iter().any(|&c| narrowest(c) < 1.0));
+    let mut options = SliceOptions::default();
+    options.min_portal = 1.0;
+    let strong = cut_positions(&exemplar, &options).unwrap();
+    assert!(strong.len() < all.len());
+    assert!(strong.iter().all(|&c| narrowest(c) >= 1.0));
+    // Pieces still tile the exemplar.
+    let set = PieceSet::new(&exemplar, &options).unwrap();
+    let total: f64 = set.pieces.iter().map(|p| p.region.area()).sum();
+    assert!((total - exemplar.region.area()).abs() < 1e-6 * exemplar.region.area());
+}
+
+#[test]
+fn bad_slicing_options_are_errors() {
+    let exemplar = builtin("lace").unwrap();
+    let mut options = SliceOptions::default();
+    options.mode = SlicingMode::Uniform { cuts: 500 };
+    assert!(matches!(PieceSet::new(&exemplar, &options), Err(SliceError::TooManyPieces { .. })));
+    options.mode = SlicingMode::Topology;
+    options.min_portal = -1.0;
+    assert!(matches!(PieceSet::new(&exemplar, &options), Err(SliceError::InvalidOption(_))));
+}

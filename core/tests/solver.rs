@@ -1,0 +1,302 @@
+//! The topology solver: exactness against exhaustive search, targets, and control.
+
+use std::sync::Mutex;
+use std::sync::atomic::{AtomicBool, Ordering};
+
+use tracery_core::{
+    BUILTIN_NAMES, Control, CurveKind, Exemplar, LengthGrid, LoadOptions, PieceSet, SliceOptions, SlicingMode,
+    SolveError, SolveOptions, Target, TopologyDescriptor, Unmet, builtin, solve, tolerance_levels,
+};
+
+/// The best objective over every piece sequence, by brute force, with the
+/// same quantized widths, tolerance levels and length term as the solver.
+fn exhaustive(set: &PieceSet, options: &SolveOptions) -> Option<f64> {
+    let grid = LengthGrid::new(set, options);
+    let steps: Vec<u32> = set.pieces.iter().map(|p| grid.steps(p.width)).collect();
+    for tolerance in tolerance_levels(options) {
+        let (lo, hi) = grid.window(tolerance);
+        let hi = hi.max(1);
+        let epsilon = (f64::from(hi) - f64::from(grid.target)).max(1.0);
+        let mut best: Option<f64> = None;
+        let starts: Vec<usize> = match options.curve {
+            CurveKind::Open => (0..set.len()).filter(|&i| set.pieces[i].left.is_empty()).collect(),
+            CurveKind::Closed => (0..set.len()).collect(),
+        };
+        struct Walk<'a> {
+            set: &'a PieceSet,
+            options: &'a SolveOptions,
+            steps: &'a [u32],
+            lo: u32,
+            hi: u32,
+            target: f64,
+            epsilon: f64,
+        }
+        fn dfs(w: &Walk, seq: &mut Vec<usize>, len: u32, cost: f64, d: &TopologyDescriptor, best: &mut Option<f64>) {
+            let last = *seq.last().unwrap();
+            if len >= w.lo {
+                let term = w.options.length_weight * ((f64::from(len) - w.target) / w.epsilon).powi(2);
+                let score = match w.options.curve {
+                    CurveKind::Open => d.is_finished().then(|| (d.components(), d.holes(), 1)).map(|t| (t, cost)),
+                    CurveKind::Closed => w.set.pair(last, seq[0]).and_then(|closing| {
+                        d.close_loop().map(|t| ((t.components, t.holes, t.wraps), cost + closing.cost))
+                    }),
+                };
+                if let Some(((c, h, wraps), total)) = score {
+                    let loop_ok = !w.options.closed_pattern || wraps > 0;
+                    if w.options.components.accepts(c) && w.options.holes.accepts(h) && loop_ok {
+                        let total = total + term;
+                        if best.is_none_or(|b| total < b) {
+                            *best = Some(total);
+                        }
+                    }
+                }
+            }
+            for j in 0..w.set.len() {
+                let Some(pair) = w.set.pair(last, j) else { continue };
+                let next_len = len + w.steps[j];
+                if next_len > w.hi {
+                    continue;
+                }
+                let joined = d.join(&w.set.pieces[j].descriptor).unwrap();
+                seq.push(j);
+                dfs(w, seq, next_len, cost + pair.cost, &joined, best);
+                seq.pop();
+            }
+        }
+        let walk = Walk { set, options, steps: &steps, lo, hi, target: f64::from(grid.target), epsilon };
+        for s in starts {
+            if steps[s] <= hi {
+                dfs(&walk, &mut vec![s], steps[s], 0.0, &set.pieces[s].descriptor, &mut best);
+            }
+        }
+        if best.is_some() {
+            return best;
+        }
+    }
+    None
+}
+
+#[test]
+fn dp_equals_exhaustive_search_on_small_instances() {
+    let mut compared = 0;
+    let mut solved = 0;
+    for name in BUILTIN_NAMES {
+        let exemplar = builtin(name).unwrap();
+        for cuts in [2, 4] {
+            let mut slicing = SliceOptions::default();
+            slicing.mode = SlicingMode::Uniform { cuts };
+            let set = PieceSet::new(&exemplar, &slicing).unwrap();
+            for factor in [0.5, 0.9] {
+                for curve in [CurveKind::Open, CurveKind::Closed] {
+                    for (components, holes, closed_pattern) in [
+                        (Target::Exactly(1), Target::Any, false),
+                        (Target::Any, Target::Any, false),
+                        (Target::Exactly(1), Target::Exactly(0), false),
+                        (Target::Exactly(1), Target::Any, true),
+                        (Target::Exactly(2), Target::Any, false),
+                    ] {
+                        let mut options = SolveOptions::new(factor * exemplar.width());
+                        options.curve = curve;
+                        options.components = components;
+                        options.holes = holes;
+                        options.closed_pattern = closed_pattern;
+                        let expected = exhaustive(&set, &options);
+                        let got = solve(&set, &options, &Control::default());
+                        let context = format!(
+                            "{name} cuts={cuts} x{factor} {curve:?} {components:?} {holes:?} loop={closed_pattern}"
+                        );
+                        match (expected, got) {
+                            (Some(best), Ok(solution)) => {
+                                assert!(
+                                    (best - solution.cost).abs() < 1e-9,
+                                    "{context}: exhaustive {best}, DP {}",
+                                    solution.cost
+                                );
+                                assert!(components.accepts(solution.components), "{context}");
+                                assert!(holes.accepts(solution.holes), "{context}");
+                                solved += 1;
+                            }
+                            (None, Err(SolveError::NoSolution(_))) => {}
+                            (e, g) => panic!("{context}: exhaustive {e:?}, DP {g:?}"),
+                        }
+                        compared += 1;
+                    }
+                }
+            }
+        }
+    }
+    assert_eq!(compared, 8 * 2 * 2 * 2 * 5);
+    assert!(solved > compared / 3, "only {solved} of {compared} instances had a solution");
+}
+
+fn dots() -> Exemplar {
+    let svg = r#"<svg xmlns="http://www.w3.org/2000/svg" viewBox="0 0 100 20">
+        <circle cx="10" cy="10" r="4"/><circle cx="30" cy="10" r="4"/><circle cx="50" cy="10" r="4"/>
+        <circle cx="70" cy="10" r="4"/><circle cx="90" cy="10" r="4"/></svg>"#;
+    Exemplar::from_svg_str("dots", svg, &LoadOptions::default()).unwrap()
+}
+
+#[test]
+fn impossible_targets_say_which_target_fails() {
+    let exemplar = dots();
+    let set = PieceSet::new(&exemplar, &SliceOptions::default()).unwrap();
+    let mut options = SolveOptions::new(20.0 * exemplar.width());
+    options.components = Target::Exactly(1);
+    let error = solve(&set, &options, &Control::default()).unwrap_err();
+    assert_eq!(error, SolveError::NoSolution(Unmet::Components(Target::Exactly(1))));
+    assert!(error.to_string().contains("component"), "{error}");
+    // Relaxing the target that was named makes it solvable.
+    options.components = Target::Any;
+    let solution = solve(&set, &options, &Control::default()).unwrap();
+    assert!(solution.components > 10);
+
+    // Holes from an exemplar that has none.
+    let vine = builtin("vine").unwrap();
+    let set = PieceSet::new(&vine, &SliceOptions::default()).unwrap();
+    let mut options = SolveOptions::new(4.0 * vine.width());
+    options.holes = Target::Exactly(3);
+    let error = solve(&set, &options, &Control::default()).unwrap_err();
+    assert_eq!(error, SolveError::NoSolution(Unmet::Holes(Target::Exactly(3))));
+
+    // A loop that runs all around, from separate dots.
+    let set = PieceSet::new(&exemplar, &SliceOptions::default()).unwrap();
+    let mut options = SolveOptions::new(10.0 * exemplar.width());
+    options.curve = CurveKind::Closed;
+    options.components = Target::Any;
+    options.closed_pattern = true;
+    let error = solve(&set, &options, &Control::default()).unwrap_err();
+    assert_eq!(error, SolveError::NoSolution(Unmet::ClosedPattern));
+}
+
+#[test]
+fn loops_run_all_around_when_asked() {
+    for name in ["lace", "vine", "braid", "meander"] {
+        let exemplar = builtin(name).unwrap();
+        let set = PieceSet::new(&exemplar, &SliceOptions::default()).unwrap();
+        let mut options = SolveOptions::new(6.0 * exemplar.width());
+        options.curve = CurveKind::Closed;
+        options.closed_pattern = true;
+        let solution = solve(&set, &options, &Control::default()).unwrap();
+        assert_eq!(solution.components, 1, "{name}");
+        assert_eq!(solution.wraps, 1, "{name}");
+        let first = solution.pieces[0];
+        let last = *solution.pieces.last().unwrap();
+        assert!(set.pair(last, first).is_some(), "{name}: the loop must close");
+        assert!((solution.length - solution.target_length).abs() <= solution.tolerance + 1e-9);
+    }
+}
+
+#[test]
+fn hole_targets_are_met_exactly() {
+    let exemplar = builtin("lace").unwrap();
+    let set = PieceSet::new(&exemplar, &SliceOptions::default()).unwrap();
+    let mut options = SolveOptions::new(3.0 * exemplar.width());
+    let natural = solve(&set, &options, &Control::default()).unwrap().holes;
+    let mut met = 0;
+    for holes in [natural - 1, natural + 1, natural - 4, natural + 5] {
+        options.holes = Target::Exactly(holes);
+        match solve(&set, &options, &Control::default()) {
+            Ok(solution) => {
+                assert_eq!((solution.components, solution.holes), (1, holes));
+                met += 1;
+            }
+            Err(e) => assert!(matches!(e, SolveError::NoSolution(Unmet::Holes(_) | Unmet::Combination { .. })), "{e}"),
+        }
+    }
+    assert!(met >= 3, "only {met} of 4 hole targets near {natural} were met");
+}
+
+#[test]
+fn cancellation_stops_the_search() {
+    let exemplar = builtin("braid").unwrap();
+    let set = PieceSet::new(&exemplar, &SliceOptions::default()).unwrap();
+    let mut options = SolveOptions::new(8.0 * exemplar.width());
+    options.curve = CurveKind::Closed;
+    let cancel = AtomicBool::new(true);
+    let control = Control { cancel: Some(&cancel), progress: None };
+    assert_eq!(solve(&set, &options, &control).unwrap_err(), SolveError::Cancelled);
+    // Cancelling from the progress callback, midway, also stops it.
+    let cancel = AtomicBool::new(false);
+    let stop_halfway = |f: f32| {
+        if f > 0.3 {
+            cancel.store(true, Ordering::Relaxed);
+        }
+    };
+    let control = Control { cancel: Some(&cancel), progress: Some(&stop_halfway) };
+    assert_eq!(solve(&set, &options, &control).unwrap_err(), SolveError::Cancelled);
+}
+
+#[test]
+fn progress_is_reported_up_to_done() {
+    let exemplar = builtin("lace").unwrap();
+    let set = PieceSet::new(&exemplar, &SliceOptions::default()).unwrap();
+    let seen = Mutex::new(Vec::new());
+    let record = |f: f32| seen.lock().unwrap().push(f);
+    let options = SolveOptions::new(5.0 * exemplar.width());
+    solve(&set, &options, &Control { cancel: None, progress: Some(&record) }).unwrap();
+    let seen = seen.into_inner().unwrap();
+    assert!(seen.len() > 3);
+    assert!(seen.iter().all(|f| (0.0..=1.0).contains(f)));
+    assert_eq!(*seen.last().unwrap(), 1.0);
+}
+
+#[test]
+fn state_cap_ends_with_an_error() {
+    let exemplar = builtin("lace").unwrap();
+    let set = PieceSet::new(&exemplar, &SliceOptions::default()).unwrap();
+    let mut options = SolveOptions::new(5.0 * exemplar.width());
+    options.max_states = 100;
+    let error = solve(&set, &options, &Control::default()).unwrap_err();
+    assert!(matches!(error, SolveError::TooManyStates { limit: 100, .. }), "{error:?}");
+}
+
+#[test]
+fn bad_options_are_rejected() {
+    let exemplar = builtin("lace").unwrap();
+    let set = PieceSet::new(&exemplar, &SliceOptions::default()).unwrap();
+    for length in [0.0, -1.0, f64::NAN, f64::INFINITY] {
+        let options = SolveOptions::new(length);
+        assert!(matches!(solve(&set, &options, &Control::default()), Err(SolveError::InvalidOption(_))));
+    }
+    let mut options = SolveOptions::new(100.0);
+    options.variety = -1.0;
+    assert!(matches!(solve(&set, &options, &Control::default()), Err(SolveError::InvalidOption(_))));
+}
+
+#[test]
+fn variety_lowers_autocorrelation_and_seeds_vary_the_result() {
+    let exemplar = builtin("lace").unwrap();
+    let set = PieceSet::new(&exemplar, &SliceOptions::default()).unwrap();
+    let mut options = SolveOptions::new(6.0 * exemplar.width());
+    let plain = solve(&set, &options, &Control::default()).unwrap();
+    options.variety = 1.0;
+    let varied = solve(&set, &options, &Control::default()).unwrap();
+    assert!(varied.autocorrelation < plain.autocorrelation, "{} vs {}", varied.autocorrelation, plain.autocorrelation);
+    assert_eq!(varied.components, 1);
+    options.seed = 7;
+    let seeded = solve(&set, &options, &Control::default()).unwrap();
+    assert_ne!(seeded.pieces, varied.pieces);
+    assert_eq!(seeded.components, 1);
+}
+
+#[test]
+fn band_height_bounds_the_accumulated_offsets() {
+    let exemplar = builtin("vine").unwrap();
+    let set = PieceSet::new(&exemplar, &SliceOptions::default()).unwrap();
+    let mut options = SolveOptions::new(5.0 * exemplar.width());
+    let free = solve(&set, &options, &Control::default()).unwrap();
+    let drift = free.offsets.iter().fold(0.0f64, |m, o| m.max(o.abs()));
+    assert!(drift > 0.0);
+    options.band_height = drift; // half of the free drift on each side
+    let solution = solve(&set, &options, &Control::default()).unwrap();
+    assert!(solution.offsets.iter().all(|o| o.abs() <= 0.5 * drift + 1e-6), "{:?}", solution.offsets);
+
+    // A tilted exemplar climbs with every jump back; a band too narrow for
+    // that says so instead of blaming the topology targets.
+    let tilted = builtin("tilted").unwrap();
+    let set = PieceSet::new(&tilted, &SliceOptions::default()).unwrap();
+    let mut options = SolveOptions::new(5.0 * tilted.width());
+    options.band_height = 0.5 * tilted.height();
+    let error = solve(&set, &options, &Control::default()).unwrap_err();
+    assert_eq!(error, SolveError::NoSolution(Unmet::Band));
+}

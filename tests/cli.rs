@@ -1,0 +1,25 @@
+//! The `tracery` command as a person runs it.
+
+use std::process::Command;
+
+fn tracery() -> Command {
+    Command::new(env!("CARGO_BIN_EXE_tracery"))
+}
+
+#[test]
+fn list_prints_every_builtin() {
+    let out = tracery().arg("list").output().unwrap();
+    assert!(out.status.success());
+    let text = String::from_utf8(out.stdout).unwrap();
+    for name in tracery_core::BUILTIN_NAMES {
+        assert!(text.lines().any(|l| l.starts_with(name)), "{name} missing from:\n{text}");
+    }
+}
+
+#[test]
+fn unknown_command_fails_with_one_clear_line() {
+    let out = tracery().arg("frobnicate").output().unwrap();
+    assert!(!out.status.success());
+    let err = String::from_utf8(out.stderr).unwrap();
+    assert!(err.starts_with("tracery: unknown command 'frobnicate'"), "{err}");
+}
