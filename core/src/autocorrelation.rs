@@ -20,32 +20,34 @@ pub const LAGS: usize = 12;
 /// Fixed-point scale of the per-lag sums.
 const SCALE: f64 = 256.0;
 
-const NONE: u8 = u8::MAX;
-
 /// Running autocorrelation of a sequence: the last pieces and the sum per lag.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct Autocorrelation {
     /// `history[k]` is the piece `k + 1` places before the end.
     history: [u8; LAGS],
     sums: [u16; LAGS],
+    /// How many entries of `history` are filled.
+    filled: u8,
+    /// The largest of `sums`, kept so that comparing states is cheap.
+    max: u16,
 }
 
 impl Default for Autocorrelation {
     fn default() -> Self {
-        Autocorrelation { history: [NONE; LAGS], sums: [0; LAGS] }
+        Autocorrelation { history: [0; LAGS], sums: [0; LAGS], filled: 0, max: 0 }
     }
 }
 
 /// Precomputed `exp(-d / σ)` for piece-index distances `d`, in fixed point.
 #[derive(Clone, Debug)]
 pub struct Similarity {
-    table: Vec<u16>,
+    table: [u16; 256],
 }
 
 impl Similarity {
     /// The table for a given `σ` (the paper uses 0.5).
     pub fn new(sigma: f64) -> Self {
-        let table = (0..256).map(|d| ((-(d as f64) / sigma).exp() * SCALE).round() as u16).collect();
+        let table = std::array::from_fn(|d| ((-(d as f64) / sigma).exp() * SCALE).round() as u16);
         Similarity { table }
     }
 }
@@ -53,23 +55,21 @@ impl Similarity {
 impl Autocorrelation {
     /// The autocorrelation of the sequence extended by `piece`.
     pub fn push(&self, piece: usize, similarity: &Similarity) -> Autocorrelation {
-        let p = piece.min(254) as u8;
+        let p = piece.min(255) as u8;
         let mut next = *self;
-        for j in 0..LAGS {
-            let h = self.history[j];
-            if h == NONE {
-                break;
-            }
-            next.sums[j] = next.sums[j].saturating_add(similarity.table[usize::from(h.abs_diff(p))]);
+        for j in 0..usize::from(self.filled) {
+            next.sums[j] = next.sums[j].saturating_add(similarity.table[usize::from(self.history[j].abs_diff(p))]);
         }
+        next.max = next.sums.iter().copied().max().unwrap_or(0);
         next.history.copy_within(0..LAGS - 1, 1);
         next.history[0] = p;
+        next.filled = (self.filled + 1).min(LAGS as u8);
         next
     }
 
     /// `max` over lags `1..=LAGS` of the per-lag similarity sums.
     pub fn value(&self) -> f64 {
-        f64::from(*self.sums.iter().max().unwrap_or(&0)) / SCALE
+        f64::from(self.max) / SCALE
     }
 
     /// The autocorrelation of a whole sequence, computed from scratch (for tests and reports).

@@ -104,7 +104,7 @@ pub struct SolveOptions {
     pub variety: f64,
     /// σ of the autocorrelation similarity, in piece indices.
     pub autocorrelation_sigma: f64,
-    /// Length quantum in exemplar units; `None` picks an eighth of the
+    /// Length quantum in exemplar units; `None` picks a quarter of the
     /// narrowest piece (at most a fiftieth of ε).
     pub length_quantum: Option<f64>,
     /// Most DP states held at once before giving up with an error.
@@ -189,7 +189,7 @@ impl LengthGrid {
     pub fn new(set: &PieceSet, options: &SolveOptions) -> Self {
         let narrowest = set.pieces.iter().map(|p| p.width).fold(f64::INFINITY, f64::min);
         let epsilon = options.length_tolerance * options.target_length;
-        let quantum = options.length_quantum.unwrap_or_else(|| (narrowest / 8.0).min(epsilon / 50.0).max(1e-12));
+        let quantum = options.length_quantum.unwrap_or_else(|| (narrowest / 4.0).min(epsilon / 50.0).max(1e-12));
         LengthGrid { quantum, target: (options.target_length / quantum).round() as u32 }
     }
 
@@ -398,18 +398,34 @@ impl<'p> Search<'p> {
         if self.variety() { state.cost + self.problem.options.variety * correlation.value() } else { state.cost }
     }
 
-    /// Keeps `state` at `length` unless a cheaper one with the same key is there.
-    fn add(&mut self, length: u32, state: State, correlation: Autocorrelation) -> Result<(), SolveError> {
+    /// Keeps `state` at `length` unless a cheaper one with the same key is
+    /// there. `penalty_floor` is a lower bound of the variety penalty of
+    /// `state` (its parent's: the per-lag sums only grow), so the new
+    /// autocorrelation is computed only when the state may win.
+    fn add(
+        &mut self,
+        length: u32,
+        state: State,
+        penalty_floor: f64,
+        correlation: impl FnOnce(&Self) -> Autocorrelation,
+    ) -> Result<(), SolveError> {
         let key = u64::from(state.piece) << 32 | u64::from(state.descriptor);
         let slot = length as usize % self.buckets.len();
+        let variety = self.variety();
         if let Some(&existing) = self.buckets[slot].get(&key) {
             let old = &self.arena[existing as usize];
-            let old_total = if self.variety() { self.total(old, &self.auto[existing as usize]) } else { old.cost };
-            if self.total(&state, &correlation) < old_total {
-                self.arena[existing as usize] = state;
-                if self.variety() {
+            let old_total = if variety { self.total(old, &self.auto[existing as usize]) } else { old.cost };
+            if old_total <= state.cost + penalty_floor {
+                return Ok(());
+            }
+            if variety {
+                let correlation = correlation(self);
+                if self.total(&state, &correlation) < old_total {
+                    self.arena[existing as usize] = state;
                     self.auto[existing as usize] = correlation;
                 }
+            } else {
+                self.arena[existing as usize] = state;
             }
             return Ok(());
         }
@@ -423,7 +439,8 @@ impl<'p> Search<'p> {
         problem.created.fetch_add(1, Ordering::Relaxed);
         self.buckets[slot].insert(key, self.arena.len() as u32);
         self.arena.push(state);
-        if self.variety() {
+        if variety {
+            let correlation = correlation(self);
             self.auto.push(correlation);
         }
         Ok(())
@@ -442,8 +459,7 @@ impl<'p> Search<'p> {
             }
             let descriptor = self.interner.intern(d);
             let state = State { cost: 0.0, parent: NO_PARENT, descriptor, delta: 0.0, piece: s as u16 };
-            let correlation = Autocorrelation::default().push(s, &problem.similarity);
-            self.add(length, state, correlation)?;
+            self.add(length, state, 0.0, |_| Autocorrelation::default().push(s, &problem.similarity))?;
         }
         let mut open: Vec<u32> = Vec::new();
         for length in 0..=max_len {
@@ -481,12 +497,11 @@ impl<'p> Search<'p> {
                         delta,
                         piece: b as u16,
                     };
-                    let correlation = if self.variety() {
-                        self.auto[index as usize].push(b, &problem.similarity)
-                    } else {
-                        Autocorrelation::default()
-                    };
-                    self.add(next_length, next, correlation)?;
+                    let floor =
+                        if self.variety() { problem.options.variety * self.auto[index as usize].value() } else { 0.0 };
+                    self.add(next_length, next, floor, |search| {
+                        search.auto[index as usize].push(b, &problem.similarity)
+                    })?;
                 }
             }
         }
