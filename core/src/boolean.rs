@@ -1,5 +1,10 @@
 //! Polygon booleans, through [`i_overlay`].
 //!
+//! Coordinates go through `i_overlay`'s 64-bit integer engine: with 32 bits
+//! the grid is about a millionth of the drawing, coarse enough for two copies
+//! of one seam, computed along different paths, to land on different grid
+//! lines and leave a hairline gap.
+//!
 //! Every function returns a clean [`Region`]: polygons that do not overlap,
 //! outer rings counter-clockwise, holes clockwise, one polygon per connected
 //! component.
@@ -43,14 +48,19 @@ fn region_contours(region: &Region) -> Vec<Contour> {
 
 fn from_shapes(shapes: Vec<Vec<Vec<[f64; 2]>>>) -> Region {
     let ring = |c: Vec<[f64; 2]>| c.into_iter().map(|[x, y]| DVec2::new(x, y)).collect::<Vec<_>>();
+    let extent = shapes.iter().flatten().flatten().fold(0.0f64, |m, p| m.max(p[0].abs()).max(p[1].abs()));
+    // Rings of no area (collinear slivers left where two edges meet) are
+    // not holes or parts a person could see or print.
+    let negligible = (extent * 1e-9).powi(2);
     let polygons = shapes
         .into_iter()
         .filter_map(|shape| {
             let mut contours = shape.into_iter();
             let outer = ring(contours.next()?);
-            Some(Polygon { outer, holes: contours.map(ring).collect() })
+            let holes = contours.map(ring).filter(|h| crate::signed_area(h).abs() > negligible).collect();
+            Some(Polygon { outer, holes })
         })
-        .filter(|p| p.outer.len() >= 3)
+        .filter(|p| p.outer.len() >= 3 && crate::signed_area(&p.outer).abs() > negligible)
         .collect();
     Region { polygons }
 }
@@ -71,7 +81,7 @@ pub fn resolve_contours(contours: &[Vec<DVec2>], rule: FillRule) -> Region {
     if input.is_empty() {
         return Region::default();
     }
-    from_shapes(input.simplify_shape(rule.into()))
+    from_shapes(input.simplify_shape_as::<i64>(rule.into()))
 }
 
 /// Union of all polygons of all regions.
@@ -82,7 +92,7 @@ pub fn union(regions: &[&Region]) -> Region {
     }
     // Clean regions wind +1 inside their outer rings and 0 in holes, so the
     // nonzero rule over all their rings together is exactly their union.
-    from_shapes(contours.simplify_shape(OverlayFill::NonZero))
+    from_shapes(contours.simplify_shape_as::<i64>(OverlayFill::NonZero))
 }
 
 /// The part of `region` inside `rect`.
@@ -92,7 +102,7 @@ pub fn clip_to_rect(region: &Region, rect: &Rect) -> Region {
         return Region::default();
     }
     let clip = to_contour(&rect.corners());
-    from_shapes(subject.overlay(&clip, OverlayRule::Intersect, OverlayFill::NonZero))
+    from_shapes(subject.overlay_as::<i64>(&clip, OverlayRule::Intersect, OverlayFill::NonZero))
 }
 
 /// The part of `a` outside `b`.
@@ -105,5 +115,5 @@ pub fn difference(a: &Region, b: &Region) -> Region {
     if clip.is_empty() {
         return union(&[a]);
     }
-    from_shapes(subject.overlay(&clip, OverlayRule::Difference, OverlayFill::NonZero))
+    from_shapes(subject.overlay_as::<i64>(&clip, OverlayRule::Difference, OverlayFill::NonZero))
 }

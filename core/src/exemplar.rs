@@ -200,6 +200,70 @@ fn check_vertices(vertices: usize, limit: usize) -> Result<(), ExemplarError> {
     if vertices > limit { Err(ExemplarError::TooComplex { vertices, limit }) } else { Ok(()) }
 }
 
+/// The first path of an SVG document (in document order) as a polyline in
+/// user units, `y` flipped to point up; a closed path repeats its first point
+/// at the end. Used to take a curve from a drawing.
+pub fn first_path_points(data: &[u8]) -> Result<Vec<DVec2>, ExemplarError> {
+    let tree =
+        usvg::Tree::from_data(data, &usvg::Options::default()).map_err(|e| ExemplarError::NotSvg(e.to_string()))?;
+    fn first(group: &usvg::Group) -> Option<&usvg::Path> {
+        group.children().iter().find_map(|node| match node {
+            usvg::Node::Group(g) => first(g),
+            usvg::Node::Path(p) => Some(p.as_ref()),
+            _ => None,
+        })
+    }
+    let path = first(tree.root()).ok_or(ExemplarError::NothingFilled)?;
+    let bbox = tree.root().abs_bounding_box();
+    let tolerance = (f64::from(bbox.width()).hypot(f64::from(bbox.height())) * 1e-4).max(1e-9);
+    let t = path.abs_transform();
+    let map = |p: tiny_skia_path::Point| {
+        let (x, y) = (f64::from(p.x), f64::from(p.y));
+        point(
+            f64::from(t.sx) * x + f64::from(t.kx) * y + f64::from(t.tx),
+            f64::from(t.ky) * x + f64::from(t.sy) * y + f64::from(t.ty),
+        )
+    };
+    let mut points: Vec<DVec2> = Vec::new();
+    let mut last = point(0.0, 0.0);
+    let flip = |p: lyon::geom::Point<f64>| DVec2::new(p.x, -p.y);
+    for segment in path.data().segments() {
+        match segment {
+            PathSegment::MoveTo(p) => {
+                if !points.is_empty() {
+                    break;
+                }
+                last = map(p);
+                points.push(flip(last));
+            }
+            PathSegment::LineTo(p) => {
+                last = map(p);
+                points.push(flip(last));
+            }
+            PathSegment::QuadTo(c, p) => {
+                let seg = QuadraticBezierSegment { from: last, ctrl: map(c), to: map(p) };
+                seg.for_each_flattened(tolerance, &mut |l: &LineSegment<f64>| points.push(flip(l.to)));
+                last = seg.to;
+            }
+            PathSegment::CubicTo(c1, c2, p) => {
+                let seg = CubicBezierSegment { from: last, ctrl1: map(c1), ctrl2: map(c2), to: map(p) };
+                seg.for_each_flattened(tolerance, &mut |l: &LineSegment<f64>| points.push(flip(l.to)));
+                last = seg.to;
+            }
+            PathSegment::Close => {
+                if let Some(&first) = points.first() {
+                    points.push(first);
+                }
+                break;
+            }
+        }
+    }
+    if points.iter().any(|p| !p.is_finite()) {
+        return Err(ExemplarError::NotSimple("the path has a coordinate that is not a number".into()));
+    }
+    Ok(points)
+}
+
 /// Flattens a path into closed polylines in `(u, v)` (SVG `y` flipped).
 fn flatten(path: &tiny_skia_path::Path, t: usvg::Transform, tolerance: f64) -> Vec<Vec<DVec2>> {
     let map = |p: tiny_skia_path::Point| {

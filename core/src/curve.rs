@@ -1,0 +1,266 @@
+//! Curves that patterns follow: arc-length parameterized polylines with normals.
+
+use glam::DVec2;
+use serde::{Deserialize, Serialize};
+
+/// A smooth curve as a dense polyline, parameterized by arc length.
+///
+/// `u` runs along the curve from 0 to [`Curve::length`]; the band's `v`
+/// axis is the left normal (counter-clockwise from the tangent).
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct Curve {
+    points: Vec<DVec2>,
+    /// Arc length at each point.
+    arc: Vec<f64>,
+    closed: bool,
+}
+
+/// Why a curve could not be built.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+#[non_exhaustive]
+pub enum CurveError {
+    /// Fewer than two distinct points, or no length.
+    #[error("the curve needs at least two distinct points")]
+    TooShort,
+    /// A coordinate is not a finite number.
+    #[error("the curve has a coordinate that is not a number")]
+    NotFinite,
+}
+
+impl Curve {
+    /// A curve through `points` as given (no smoothing); a closed curve joins
+    /// the last point back to the first.
+    pub fn from_polyline(points: &[DVec2], closed: bool) -> Result<Curve, CurveError> {
+        if points.iter().any(|p| !p.is_finite()) {
+            return Err(CurveError::NotFinite);
+        }
+        let mut pts: Vec<DVec2> = Vec::with_capacity(points.len() + 1);
+        for &p in points {
+            if pts.last().is_none_or(|q: &DVec2| q.distance(p) > 1e-9) {
+                pts.push(p);
+            }
+        }
+        if closed && pts.len() > 2 && pts[0].distance(*pts.last().unwrap()) <= 1e-9 {
+            pts.pop();
+        }
+        if pts.len() < 2 {
+            return Err(CurveError::TooShort);
+        }
+        if closed {
+            pts.push(pts[0]);
+        }
+        let mut arc = Vec::with_capacity(pts.len());
+        let mut acc = 0.0;
+        arc.push(0.0);
+        for w in pts.windows(2) {
+            acc += w[0].distance(w[1]);
+            arc.push(acc);
+        }
+        if acc <= 0.0 {
+            return Err(CurveError::TooShort);
+        }
+        Ok(Curve { points: pts, arc, closed })
+    }
+
+    /// A curve from a person's stroke: smoothed (Chaikin corner cutting) and
+    /// resampled every `spacing` units, so jitter of the hand does not show.
+    ///
+    /// ```
+    /// use glam::DVec2;
+    /// use tracery_core::Curve;
+    /// let stroke: Vec<DVec2> = (0..50).map(|i| DVec2::new(i as f64, if i % 2 == 0 { 0.0 } else { 0.3 })).collect();
+    /// let curve = Curve::from_stroke(&stroke, false, 1.0).unwrap();
+    /// assert!((curve.length() - 49.0).abs() < 2.0);
+    /// ```
+    pub fn from_stroke(points: &[DVec2], closed: bool, spacing: f64) -> Result<Curve, CurveError> {
+        let mut pts: Vec<DVec2> = Curve::from_polyline(points, closed)?.resampled(spacing).points;
+        if closed {
+            pts.pop();
+        }
+        for _ in 0..3 {
+            pts = chaikin(&pts, closed);
+        }
+        Ok(Curve::from_polyline(&pts, closed)?.resampled(spacing))
+    }
+
+    /// A straight line of `length` along `+x`, from the origin.
+    pub fn line(length: f64) -> Result<Curve, CurveError> {
+        Curve::from_polyline(&[DVec2::ZERO, DVec2::new(length, 0.0)], false)
+    }
+
+    /// A circle of `radius` around the origin, counter-clockwise.
+    pub fn circle(radius: f64) -> Result<Curve, CurveError> {
+        let n = 720;
+        let pts: Vec<DVec2> = (0..n)
+            .map(|i| {
+                let a = std::f64::consts::TAU * i as f64 / n as f64;
+                DVec2::new(radius * a.cos(), radius * a.sin())
+            })
+            .collect();
+        Curve::from_polyline(&pts, true)
+    }
+
+    /// A smooth S curve of arc length `length`: one period of a sine whose
+    /// amplitude is an eighth of its span.
+    pub fn wave(length: f64) -> Result<Curve, CurveError> {
+        let n = 600;
+        let unit: Vec<DVec2> = (0..=n)
+            .map(|i| {
+                let t = i as f64 / n as f64;
+                DVec2::new(t, (std::f64::consts::TAU * t).sin() / 8.0)
+            })
+            .collect();
+        let unit_length: f64 = unit.windows(2).map(|w| w[0].distance(w[1])).sum();
+        let pts: Vec<DVec2> = unit.iter().map(|p| *p * (length / unit_length)).collect();
+        Curve::from_polyline(&pts, false)
+    }
+
+    /// The same curve with points every `spacing` units of arc length.
+    pub fn resampled(&self, spacing: f64) -> Curve {
+        let count = ((self.length() / spacing.max(1e-9)).ceil() as usize).clamp(2, 200_000);
+        let mut pts: Vec<DVec2> = (0..=count).map(|k| self.point(self.length() * k as f64 / count as f64)).collect();
+        if self.closed {
+            pts.pop();
+        }
+        Curve::from_polyline(&pts, self.closed).unwrap_or_else(|_| self.clone())
+    }
+
+    /// Total arc length.
+    pub fn length(&self) -> f64 {
+        *self.arc.last().unwrap_or(&0.0)
+    }
+
+    /// Whether the curve is a loop.
+    pub fn is_closed(&self) -> bool {
+        self.closed
+    }
+
+    /// The polyline points (on a loop, the first point is repeated at the end).
+    pub fn points(&self) -> &[DVec2] {
+        &self.points
+    }
+
+    /// Segment index and fraction for arc length `u` (wrapped on loops, clamped otherwise).
+    fn locate(&self, u: f64) -> (usize, f64) {
+        let length = self.length();
+        let u = if self.closed { u.rem_euclid(length) } else { u.clamp(0.0, length) };
+        let k = self.arc.partition_point(|&a| a <= u).clamp(1, self.arc.len() - 1) - 1;
+        let span = self.arc[k + 1] - self.arc[k];
+        (k, if span > 0.0 { (u - self.arc[k]) / span } else { 0.0 })
+    }
+
+    /// The point at arc length `u`.
+    pub fn point(&self, u: f64) -> DVec2 {
+        let (k, t) = self.locate(u);
+        self.points[k].lerp(self.points[k + 1], t)
+    }
+
+    fn segment_tangent(&self, k: usize) -> DVec2 {
+        (self.points[k + 1] - self.points[k]).normalize_or(DVec2::X)
+    }
+
+    /// The unit tangent at arc length `u`, blended between segments so that it
+    /// turns continuously.
+    pub fn tangent(&self, u: f64) -> DVec2 {
+        let (k, t) = self.locate(u);
+        let segments = self.points.len() - 1;
+        let here = self.segment_tangent(k);
+        // Blend with the neighbouring segment over the half of the segment next to it.
+        let (other, w) = if t < 0.5 {
+            let prev = if k > 0 {
+                Some(k - 1)
+            } else if self.closed {
+                Some(segments - 1)
+            } else {
+                None
+            };
+            (prev.map(|p| self.segment_tangent(p)), 0.5 - t)
+        } else {
+            let next = if k + 1 < segments {
+                Some(k + 1)
+            } else if self.closed {
+                Some(0)
+            } else {
+                None
+            };
+            (next.map(|p| self.segment_tangent(p)), t - 0.5)
+        };
+        match other {
+            Some(o) => (here * (1.0 - w) + o * w).normalize_or(here),
+            None => here,
+        }
+    }
+
+    /// The unit left normal at arc length `u`.
+    pub fn normal(&self, u: f64) -> DVec2 {
+        self.tangent(u).perp()
+    }
+
+    /// Signed curvature at arc length `u` (positive when turning left), from
+    /// the turning of the tangent over `window` units of arc.
+    pub fn curvature(&self, u: f64, window: f64) -> f64 {
+        let h = 0.5 * window.max(1e-9);
+        let (a, b) = if self.closed { (u - h, u + h) } else { ((u - h).max(0.0), (u + h).min(self.length())) };
+        if b - a <= 0.0 {
+            return 0.0;
+        }
+        let ta = self.tangent(a);
+        let tb = self.tangent(b);
+        ta.perp_dot(tb).atan2(ta.dot(tb)) / (b - a)
+    }
+
+    /// The point at `(u, v)` of band space: `u` along the curve, `v` along the left normal.
+    pub fn map(&self, u: f64, v: f64) -> DVec2 {
+        self.point(u) + self.normal(u) * v
+    }
+
+    /// Winding number of the (closed) curve around `p`.
+    pub fn winding(&self, p: DVec2) -> i32 {
+        let mut w = 0;
+        for s in self.points.windows(2) {
+            let (a, b) = (s[0], s[1]);
+            if a.y <= p.y {
+                if b.y > p.y && (b - a).perp_dot(p - a) > 0.0 {
+                    w += 1;
+                }
+            } else if b.y <= p.y && (b - a).perp_dot(p - a) < 0.0 {
+                w -= 1;
+            }
+        }
+        w
+    }
+
+    /// Distance from `p` to the curve.
+    pub fn distance(&self, p: DVec2) -> f64 {
+        self.points
+            .windows(2)
+            .map(|s| {
+                let (a, b) = (s[0], s[1]);
+                let t = ((p - a).dot(b - a) / (b - a).length_squared().max(1e-300)).clamp(0.0, 1.0);
+                p.distance(a.lerp(b, t))
+            })
+            .fold(f64::INFINITY, f64::min)
+    }
+}
+
+fn chaikin(points: &[DVec2], closed: bool) -> Vec<DVec2> {
+    let n = points.len();
+    if n < 3 {
+        return points.to_vec();
+    }
+    let mut out = Vec::with_capacity(2 * n);
+    if !closed {
+        out.push(points[0]);
+    }
+    let segments = if closed { n } else { n - 1 };
+    for i in 0..segments {
+        let a = points[i];
+        let b = points[(i + 1) % n];
+        out.push(a.lerp(b, 0.25));
+        out.push(a.lerp(b, 0.75));
+    }
+    if !closed {
+        out.push(points[n - 1]);
+    }
+    out
+}
