@@ -13,7 +13,7 @@ use tracery_core::{
 
 /// Tracery: synthesize printable patterns along curves.
 #[derive(Parser, Debug)]
-#[command(name = "tracery", version, about)]
+#[command(name = "tracery", version, about, allow_negative_numbers = true)]
 pub struct Cli {
     #[command(subcommand)]
     command: Command,
@@ -28,6 +28,7 @@ enum Command {
 }
 
 #[derive(Parser, Debug)]
+#[command(allow_negative_numbers = true)]
 struct SynthArgs {
     /// An SVG file, or the name of a built-in exemplar (see `tracery list`).
     #[arg(long)]
@@ -225,7 +226,10 @@ fn synth(args: SynthArgs) -> Result<()> {
         target_components: target_text(args.components),
         target_holes: target_text(args.holes),
         target_length_mm: target_length,
-        length_mm: synthesis.band.length * synthesis.scale_mm_per_unit,
+        length_mm: match along {
+            Along::Curve(_) => synthesis.band.length * synthesis.scale_mm_per_unit,
+            Along::Rectangle { .. } => synthesis.planar.region.bounds().map_or(0.0, |b| b.width()),
+        },
         synthesized_length_mm: synthesis.solution.length * synthesis.scale_mm_per_unit,
         scale_mm_per_unit: synthesis.scale_mm_per_unit,
         cost: synthesis.solution.cost,

@@ -2,13 +2,15 @@
 
 use std::io::Write;
 
-use lyon::path::EndpointId;
-use lyon::path::commands::PathCommands;
-use lyon::tessellation::{
-    BuffersBuilder, FillOptions, FillRule as LyonFill, FillTessellator, FillVertex, VertexBuffers, VertexSource,
-};
+use std::collections::HashMap;
+
+use spade::handles::FixedVertexHandle;
+use spade::{ConstrainedDelaunayTriangulation, Point2, Triangulation};
 
 use crate::Region;
+
+/// How far apart parts that touch at a single point are moved, in mm.
+const TOUCH_GAP_MM: f64 = 1e-3;
 
 /// A triangle mesh in millimetres.
 #[derive(Clone, Debug, Default, PartialEq)]
@@ -37,89 +39,151 @@ pub enum MeshError {
 /// Extrudes `region` (millimetres, in the plane `z = 0`) to `thickness_mm`:
 /// a closed, 2-manifold, consistently oriented mesh with one shell per component.
 ///
-/// Top and bottom faces come from a constrained tessellation of the region
-/// whose vertices are exactly the rings' vertices (matched by id, not by
-/// position), and the walls join the same vertices, so the mesh is watertight
-/// by construction.
+/// Top and bottom faces come from a constrained Delaunay triangulation
+/// ([`spade`], in `f64`) whose constraint edges are exactly the rings' edges,
+/// and the walls join the same vertices, so the mesh is watertight by
+/// construction. Inside and outside are told apart by flooding the
+/// triangulation from its outer face, flipping at every ring edge.
+///
+/// ```
+/// use tracery_core::{builtin, extrude};
+/// let lace = builtin("lace").unwrap();
+/// let mesh = extrude(&lace.region, 2.0).unwrap();
+/// assert_eq!(mesh.shell_count(), 1);
+/// ```
 pub fn extrude(region: &Region, thickness_mm: f64) -> Result<Mesh, MeshError> {
     if !(thickness_mm.is_finite() && thickness_mm > 0.0) {
         return Err(MeshError::Thickness(thickness_mm));
     }
-    let rings: Vec<&Vec<glam::DVec2>> = region.rings().filter(|r| r.len() >= 3).collect();
+    // STL stores `f32`: vertices are rounded to it first and welded by exact
+    // position, so two vertices never become one only in the file.
+    let round = |p: glam::DVec2| glam::DVec2::new(f64::from(p.x as f32), f64::from(p.y as f32));
+    let mut rounded: Vec<Vec<glam::DVec2>> = region
+        .rings()
+        .map(|ring| {
+            let mut r: Vec<glam::DVec2> = Vec::with_capacity(ring.len());
+            for &p in ring {
+                let q = round(p);
+                if r.last() != Some(&q) {
+                    r.push(q);
+                }
+            }
+            while r.len() > 1 && r.first() == r.last() {
+                r.pop();
+            }
+            r
+        })
+        .filter(|r| r.len() >= 3)
+        .collect();
+    // Where rings touch at a point (parts meeting at a corner), a shared
+    // vertex would put four walls on one edge. Each copy moves a hair into
+    // its own material instead: the parts stay as separate as they were.
+    let mut uses: HashMap<(u32, u32), usize> = HashMap::new();
+    let key = |p: glam::DVec2| ((p.x as f32).to_bits(), (p.y as f32).to_bits());
+    for p in rounded.iter().flatten() {
+        *uses.entry(key(*p)).or_default() += 1;
+    }
+    for ring in &mut rounded {
+        let n = ring.len();
+        let original = ring.clone();
+        for k in 0..n {
+            if uses[&key(original[k])] > 1 {
+                let (prev, next) = (original[(k + n - 1) % n], original[(k + 1) % n]);
+                let inward = ((original[k] - prev).normalize_or_zero().perp()
+                    + (next - original[k]).normalize_or_zero().perp())
+                .normalize_or_zero();
+                ring[k] = round(original[k] + inward * TOUCH_GAP_MM);
+            }
+        }
+    }
+    let mut ids: HashMap<(u32, u32), usize> = HashMap::new();
+    let mut points: Vec<Point2<f64>> = Vec::new();
+    let mut rings: Vec<Vec<usize>> = Vec::new();
+    for ring in &rounded {
+        let mut ids_of_ring: Vec<usize> = Vec::with_capacity(ring.len());
+        for p in ring {
+            let next = points.len();
+            let id = *ids.entry(key(*p)).or_insert(next);
+            if id == next {
+                points.push(Point2::new(p.x, p.y));
+            }
+            if ids_of_ring.last() != Some(&id) {
+                ids_of_ring.push(id);
+            }
+        }
+        while ids_of_ring.len() > 1 && ids_of_ring.first() == ids_of_ring.last() {
+            ids_of_ring.pop();
+        }
+        if ids_of_ring.len() >= 3 {
+            rings.push(ids_of_ring);
+        }
+    }
     if rings.is_empty() {
         return Err(MeshError::Empty);
     }
-    let center = region.bounds().map_or(glam::DVec2::ZERO, |b| b.center());
-    let mut flat: Vec<glam::DVec2> = Vec::new();
-    let mut builder = PathCommands::builder();
-    for ring in &rings {
-        let first = flat.len();
-        for (k, p) in ring.iter().enumerate() {
-            let id = EndpointId((first + k) as u32);
-            if k == 0 {
-                builder.begin(id);
-            } else {
-                builder.line_to(id);
-            }
-            flat.push(*p);
-        }
-        builder.end(true);
-    }
-    let commands = builder.build();
-    let positions: Vec<lyon::math::Point> =
-        flat.iter().map(|p| lyon::math::point((p.x - center.x) as f32, (p.y - center.y) as f32)).collect();
-    let mut buffers: VertexBuffers<u32, u32> = VertexBuffers::new();
-    {
-        let mut output = BuffersBuilder::new(&mut buffers, |v: FillVertex| {
-            for source in v.sources() {
-                if let VertexSource::Endpoint { id } = source {
-                    return id.0;
-                }
-            }
-            // A vertex the tessellator had to add: the outline was not clean.
-            u32::MAX
-        });
-        let options = FillOptions::default().with_fill_rule(LyonFill::NonZero).with_tolerance(1e-4);
-        FillTessellator::new()
-            .tessellate_with_ids(commands.iter(), &(positions.as_slice(), &[][..]), None, &options, &mut output)
-            .map_err(|e| MeshError::Tessellation(format!("{e:?}")))?;
-    }
-    let source_of: Vec<u32> = buffers.vertices.clone();
-    if source_of.contains(&u32::MAX) {
+    let edges: Vec<[usize; 2]> =
+        rings.iter().flat_map(|r| (0..r.len()).map(move |k| [r[k], r[(k + 1) % r.len()]])).collect();
+    let mut conflicts = 0;
+    let cdt = ConstrainedDelaunayTriangulation::<Point2<f64>>::try_bulk_load_cdt(points.clone(), edges.clone(), |_| {
+        conflicts += 1
+    })
+    .map_err(|e| MeshError::Tessellation(format!("{e:?}")))?;
+    if conflicts > 0 || cdt.num_vertices() != points.len() {
         return Err(MeshError::Tessellation("the outline crosses itself".into()));
     }
-    let count = flat.len() as u32;
-    let mut mesh = Mesh { vertices: Vec::with_capacity(2 * flat.len()), triangles: Vec::new() };
-    for p in &flat {
-        mesh.vertices.push([p.x, p.y, 0.0]);
+    for &[a, b] in &edges {
+        let (va, vb) = (FixedVertexHandle::from_index(a), FixedVertexHandle::from_index(b));
+        if cdt.get_edge_from_neighbors(va, vb).is_none() {
+            return Err(MeshError::Tessellation("a vertex lies on another ring's edge".into()));
+        }
     }
-    for p in &flat {
-        mesh.vertices.push([p.x, p.y, thickness_mm]);
+    // Flood from the outer face: crossing a ring edge toggles inside/outside.
+    let mut inside: Vec<Option<bool>> = vec![None; cdt.all_faces().len()];
+    let mut queue = std::collections::VecDeque::new();
+    for hull_edge in cdt.convex_hull() {
+        for e in [hull_edge, hull_edge.rev()] {
+            if let Some(face) = e.face().as_inner()
+                && inside[face.fix().index()].is_none()
+            {
+                inside[face.fix().index()] = Some(e.as_undirected().is_constraint_edge());
+                queue.push_back(face.fix());
+            }
+        }
     }
-    for tri in buffers.indices.chunks_exact(3) {
-        let (a, b, c) = (source_of[tri[0] as usize], source_of[tri[1] as usize], source_of[tri[2] as usize]);
-        if a == b || b == c || a == c {
+    while let Some(fixed) = queue.pop_front() {
+        let face = cdt.face(fixed);
+        let here = inside[fixed.index()].unwrap_or(false);
+        for edge in face.adjacent_edges() {
+            let Some(neighbour) = edge.rev().face().as_inner() else { continue };
+            let slot = &mut inside[neighbour.fix().index()];
+            if slot.is_none() {
+                *slot = Some(here != edge.as_undirected().is_constraint_edge());
+                queue.push_back(neighbour.fix());
+            }
+        }
+    }
+    let count = points.len() as u32;
+    let mut mesh = Mesh { vertices: Vec::with_capacity(2 * points.len()), triangles: Vec::new() };
+    mesh.vertices.extend(points.iter().map(|p| [p.x, p.y, 0.0]));
+    mesh.vertices.extend(points.iter().map(|p| [p.x, p.y, thickness_mm]));
+    for face in cdt.inner_faces() {
+        if inside[face.fix().index()] != Some(true) {
             continue;
         }
-        // Orient by the triangle's own winding so the top faces up.
-        let (pa, pb, pc) = (flat[a as usize], flat[b as usize], flat[c as usize]);
-        let ccw = (pb - pa).perp_dot(pc - pa) > 0.0;
-        let (b, c) = if ccw { (b, c) } else { (c, b) };
+        // Spade's faces run counter-clockwise: the top faces up.
+        let [a, b, c] = face.vertices().map(|v| v.fix().index() as u32);
         mesh.triangles.push([a + count, b + count, c + count]);
         mesh.triangles.push([a, c, b]);
     }
-    let mut start = 0u32;
     for ring in &rings {
-        let n = ring.len() as u32;
+        let n = ring.len();
         for k in 0..n {
-            let a = start + k;
-            let b = start + (k + 1) % n;
+            let (a, b) = (ring[k] as u32, ring[(k + 1) % n] as u32);
             // Outer rings run counter-clockwise and holes clockwise, so the
             // material is on the left of every edge and the wall faces right.
             mesh.triangles.push([a, b, b + count]);
             mesh.triangles.push([a, b + count, a + count]);
         }
-        start += n;
     }
     Ok(mesh)
 }

@@ -29,6 +29,9 @@ pub struct SynthesisRequest {
     pub slicing: SlicingMode,
     /// Cuts through features thinner than this are dropped.
     pub min_portal_mm: f64,
+    /// Topology events closer than this fraction of the exemplar's height
+    /// are grouped (see [`SliceOptions::event_grouping`]).
+    pub event_grouping: f64,
     /// Millimetres per exemplar unit; `None` fits the exemplar's height to the band.
     pub scale_mm_per_unit: Option<f64>,
     /// Seed for another pattern; 0 gives the best one.
@@ -45,6 +48,7 @@ impl Default for SynthesisRequest {
             variety: 0.0,
             slicing: SlicingMode::Topology,
             min_portal_mm: 0.0,
+            event_grouping: SliceOptions::default().event_grouping,
             scale_mm_per_unit: None,
             seed: 0,
         }
@@ -134,6 +138,7 @@ pub fn synthesize(
     let mut slicing = SliceOptions::default();
     slicing.mode = request.slicing;
     slicing.min_portal = request.min_portal_mm / scale;
+    slicing.event_grouping = request.event_grouping;
     let set = PieceSet::new(exemplar, &slicing)?;
     let analysis = ms(start);
 
@@ -201,7 +206,9 @@ pub fn synthesize_rectangle(
     let mut second_request = request.clone();
     second_request.band_mm = width_mm;
     second_request.scale_mm_per_unit = Some(1.0);
-    second_request.min_portal_mm = request.min_portal_mm;
+    // The strip is as tall as the rectangle is wide: group its events on
+    // the scale of the first band, not of the whole width.
+    second_request.event_grouping = request.event_grouping * request.band_mm / width_mm;
     let second = synthesize(&strip, &line(height_mm)?, &second_request, control)?;
     let planar = PlanarPattern {
         region: second.planar.region.map_points(|p| DVec2::new(-p.y + 0.5 * width_mm, p.x)),

@@ -151,6 +151,8 @@ pub fn stitch(set: &PieceSet, sequence: &[usize], offsets: &[f64], length: f64, 
     let mut right_maps: Vec<SideMap> = (0..n).map(|i| SideMap::Shift(offsets[i])).collect();
     let mut left_maps: Vec<SideMap> = (0..n).map(|i| SideMap::Shift(offsets[i])).collect();
     let mut right_bends: Vec<Vec<Bend>> = (0..n).map(|_| Vec::new()).collect();
+    let mut right_targets: Vec<Vec<f64>> = vec![Vec::new(); n];
+    let mut left_targets: Vec<Vec<f64>> = vec![Vec::new(); n];
     let mut left_bends: Vec<Vec<Bend>> = (0..n).map(|_| Vec::new()).collect();
     let seams_to_join: Vec<usize> = match curve {
         CurveKind::Open => (1..n).collect(),
@@ -206,10 +208,14 @@ pub fn stitch(set: &PieceSet, sequence: &[usize], offsets: &[f64], length: f64, 
         }
         right_maps[a] = SideMap::Portals(map_a);
         left_maps[b] = SideMap::Portals(map_b);
+        right_targets[a] = targets.clone();
+        left_targets[b] = targets;
     }
 
     // Far below any feature, far above the rounding of the clipping.
     let snap = 1e-6 * set.exemplar_width;
+    let snap_v = 1e-6 * set.exemplar_height;
+    let no_targets: Vec<f64> = Vec::new();
     let mut polygons = Vec::new();
     for (i, piece) in pieces.iter().enumerate() {
         let (u0, u1) = (seam_u[i], seam_u[i + 1]);
@@ -248,6 +254,18 @@ pub fn stitch(set: &PieceSet, sequence: &[usize], offsets: &[f64], length: f64, 
                 }
             }
             v += bend;
+            // Endpoints on a seam take the shared target itself, to the last
+            // bit, so that both sides weld wherever they are mapped.
+            let targets = if t == 0.0 {
+                &left_targets[i]
+            } else if t == 1.0 {
+                &right_targets[i]
+            } else {
+                &no_targets
+            };
+            if let Some(&target) = targets.iter().find(|&&target| (v - target).abs() <= snap_v) {
+                v = target;
+            }
             DVec2::new(u, v)
         };
         for polygon in &piece.region.polygons {
@@ -260,13 +278,15 @@ pub fn stitch(set: &PieceSet, sequence: &[usize], offsets: &[f64], length: f64, 
     BandPattern { region, length, seams, curve }
 }
 
-/// Splits the edges of a ring so that none is longer than `step`.
+/// Splits the edges of a ring so that none is longer than `step`, except
+/// edges across the band (constant `u`): every mapping along a curve keeps
+/// those straight, and leaving them whole lets seams weld exactly.
 pub(crate) fn resample(ring: &[DVec2], step: f64) -> Vec<DVec2> {
     let mut out = Vec::with_capacity(ring.len());
     for i in 0..ring.len() {
         let a = ring[i];
         let b = ring[(i + 1) % ring.len()];
-        let pieces = ((a.distance(b) / step).ceil() as usize).clamp(1, 10_000);
+        let pieces = if a.x == b.x { 1 } else { ((a.distance(b) / step).ceil() as usize).clamp(1, 10_000) };
         for k in 0..pieces {
             out.push(a.lerp(b, k as f64 / pieces as f64));
         }

@@ -1,0 +1,264 @@
+//! `tracery synth` end to end: every built-in exemplar along a line, a loop
+//! and a wave, with several topology targets. The report must meet the
+//! targets, the STL must be a closed 2-manifold with one shell per component,
+//! and the SVG, loaded back as an exemplar, must have the same topology.
+
+use std::collections::HashMap;
+use std::path::Path;
+use std::process::Command;
+
+use tracery_core::{BUILTIN_NAMES, Exemplar, LoadOptions};
+
+fn tracery() -> Command {
+    Command::new(env!("CARGO_BIN_EXE_tracery"))
+}
+
+/// What the STL check finds, computed from the file alone.
+#[derive(Debug)]
+struct StlCheck {
+    triangles: usize,
+    shells: usize,
+    /// Edges not shared by exactly two triangles.
+    open_edges: usize,
+    /// Edges whose two triangles run the same way along them.
+    misoriented_edges: usize,
+}
+
+fn check_stl(path: &Path) -> StlCheck {
+    let data = std::fs::read(path).unwrap();
+    assert!(data.len() >= 84, "STL too short");
+    let count = u32::from_le_bytes(data[80..84].try_into().unwrap()) as usize;
+    assert_eq!(data.len(), 84 + 50 * count, "binary STL size does not match its triangle count");
+    let mut ids: HashMap<[u32; 3], u32> = HashMap::new();
+    let mut triangles = Vec::with_capacity(count);
+    for t in 0..count {
+        let base = 84 + 50 * t + 12;
+        let mut tri = [0u32; 3];
+        for (k, slot) in tri.iter_mut().enumerate() {
+            let at = base + 12 * k;
+            let key: [u32; 3] =
+                std::array::from_fn(|c| u32::from_le_bytes(data[at + 4 * c..at + 4 * c + 4].try_into().unwrap()));
+            let next = ids.len() as u32;
+            *slot = *ids.entry(key).or_insert(next);
+        }
+        triangles.push(tri);
+    }
+    // Directed edge counts: a closed, consistently oriented 2-manifold uses
+    // each edge once in each direction.
+    let mut directed: HashMap<(u32, u32), usize> = HashMap::new();
+    for tri in &triangles {
+        for k in 0..3 {
+            *directed.entry((tri[k], tri[(k + 1) % 3])).or_default() += 1;
+        }
+    }
+    let mut open_edges = 0;
+    let mut misoriented_edges = 0;
+    for (&(a, b), &n) in &directed {
+        let back = directed.get(&(b, a)).copied().unwrap_or(0);
+        if n > 1 {
+            misoriented_edges += 1;
+        }
+        if back != 1 || n != 1 {
+            open_edges += 1;
+        }
+    }
+    // Shells: triangles connected through shared edges.
+    let mut parent: Vec<usize> = (0..triangles.len()).collect();
+    fn find(p: &mut [usize], mut x: usize) -> usize {
+        while p[x] != x {
+            p[x] = p[p[x]];
+            x = p[x];
+        }
+        x
+    }
+    let mut owner: HashMap<(u32, u32), usize> = HashMap::new();
+    for (t, tri) in triangles.iter().enumerate() {
+        for k in 0..3 {
+            let (a, b) = (tri[k], tri[(k + 1) % 3]);
+            match owner.get(&(a.min(b), a.max(b))) {
+                Some(&o) => {
+                    let (x, y) = (find(&mut parent, t), find(&mut parent, o));
+                    parent[x] = y;
+                }
+                None => {
+                    owner.insert((a.min(b), a.max(b)), t);
+                }
+            }
+        }
+    }
+    let shells = (0..triangles.len()).filter(|&t| find(&mut parent, t) == t).count();
+    StlCheck { triangles: count, shells, open_edges, misoriented_edges }
+}
+
+fn field(json: &str, name: &str) -> String {
+    let key = format!("\"{name}\": ");
+    let start = json.find(&key).unwrap_or_else(|| panic!("no {name} in report")) + key.len();
+    json[start..].split([',', '\n']).next().unwrap().trim().trim_matches('"').to_string()
+}
+
+#[test]
+fn every_builtin_along_lines_loops_and_waves() {
+    let dir = tempdir("matrix");
+    let mut solved = 0;
+    let mut table = String::new();
+    for name in BUILTIN_NAMES {
+        for (curve, extra) in [("line:120", None), ("circle:25", Some("--closed-pattern")), ("wave:120", None)] {
+            for (components, holes) in [("1", "0"), ("1", "any"), ("any", "any")] {
+                let stl = dir.join(format!("{name}.stl"));
+                let svg = dir.join(format!("{name}.svg"));
+                let report = dir.join(format!("{name}.json"));
+                for f in [&stl, &svg, &report] {
+                    let _ = std::fs::remove_file(f);
+                }
+                let mut cmd = tracery();
+                cmd.args(["synth", "--exemplar", name, "--along", curve, "--components", components, "--holes", holes]);
+                cmd.arg("--stl").arg(&stl).arg("--svg").arg(&svg).arg("--report").arg(&report);
+                if let Some(e) = extra {
+                    cmd.arg(e);
+                }
+                let out = cmd.output().unwrap();
+                let context = format!("{name} {curve} components={components} holes={holes}");
+                if !out.status.success() {
+                    let err = String::from_utf8_lossy(&out.stderr);
+                    // Only "no holes" may be impossible, and only for an
+                    // exemplar that has holes of its own.
+                    let has_holes = tracery_core::builtin(name).unwrap().region.hole_count() > 0;
+                    assert!(holes == "0" && has_holes, "{context} failed: {err}");
+                    assert!(err.starts_with("tracery: no solution:") && err.trim().lines().count() == 1, "{err}");
+                    assert!(!stl.exists() && !svg.exists() && !report.exists(), "{context}: partial output left");
+                    table += &format!("| {name} | {curve} | {components} / {holes} | no solution | | |\n");
+                    continue;
+                }
+                let json = std::fs::read_to_string(&report).unwrap();
+                let found_components: usize = field(&json, "components").parse().unwrap();
+                let found_holes: usize = field(&json, "holes").parse().unwrap();
+                let openings: usize = field(&json, "loop_openings").parse().unwrap();
+                if components != "any" {
+                    assert_eq!(found_components, components.parse::<usize>().unwrap(), "{context}");
+                }
+                if holes != "any" {
+                    assert_eq!(found_holes, holes.parse::<usize>().unwrap(), "{context}");
+                }
+                if curve.starts_with("circle") {
+                    assert!(openings >= 1, "{context}: the pattern must run around the loop");
+                }
+                let target: f64 = field(&json, "target_length_mm").parse().unwrap();
+                let length: f64 = field(&json, "length_mm").parse().unwrap();
+                assert!((target - length).abs() < 1e-6 * target, "{context}: length {length} for {target}");
+
+                let check = check_stl(&stl);
+                assert_eq!(check.open_edges, 0, "{context}: STL not watertight {check:?}");
+                assert_eq!(check.misoriented_edges, 0, "{context}: STL not consistently oriented {check:?}");
+                assert_eq!(check.shells, found_components, "{context}: shells {check:?}");
+
+                let back = Exemplar::from_svg_file(&svg, &LoadOptions::default()).unwrap();
+                assert_eq!(back.region.component_count(), found_components, "{context}: SVG components");
+                assert_eq!(back.region.hole_count(), found_holes + openings, "{context}: SVG holes");
+                let ms: f64 = ["analysis", "dp", "geometry", "mesh"]
+                    .iter()
+                    .map(|k| field(&json, k).parse::<f64>().unwrap())
+                    .sum();
+                table += &format!(
+                    "| {name} | {curve} | {components} / {holes} | {found_components} / {found_holes} | {} | {ms:.0} |\n",
+                    check.shells
+                );
+                solved += 1;
+            }
+        }
+    }
+    println!(
+        "| exemplar | curve | targets (components / holes) | found | STL shells | ms |\n|---|---|---|---|---|---|\n{table}"
+    );
+    assert!(solved >= 54, "only {solved} of 72 cases solved");
+}
+
+#[test]
+fn impossible_targets_fail_cleanly_without_files() {
+    let dir = tempdir("impossible");
+    let svg = dir.join("dots.svg");
+    std::fs::write(
+        &svg,
+        r#"<svg xmlns="http://www.w3.org/2000/svg" viewBox="0 0 100 20">
+           <circle cx="10" cy="10" r="4"/><circle cx="30" cy="10" r="4"/><circle cx="50" cy="10" r="4"/>
+           <circle cx="70" cy="10" r="4"/><circle cx="90" cy="10" r="4"/></svg>"#,
+    )
+    .unwrap();
+    let stl = dir.join("out.stl");
+    let out = tracery()
+        .args(["synth", "--exemplar"])
+        .arg(&svg)
+        .args(["--along", "line:200", "--components", "1", "--stl"])
+        .arg(&stl)
+        .output()
+        .unwrap();
+    assert!(!out.status.success());
+    let err = String::from_utf8(out.stderr).unwrap();
+    assert_eq!(err.trim().lines().count(), 1, "{err}");
+    assert!(err.contains("component"), "{err}");
+    assert!(!stl.exists());
+    let leftovers: Vec<_> = std::fs::read_dir(&dir).unwrap().map(|e| e.unwrap().file_name()).collect();
+    assert_eq!(leftovers.len(), 1, "{leftovers:?}");
+}
+
+#[test]
+fn bad_input_gives_one_clear_line() {
+    for args in [
+        vec!["synth", "--exemplar", "no-such-thing", "--along", "line:100"],
+        vec!["synth", "--exemplar", "lace", "--along", "spiral:100"],
+        vec!["synth", "--exemplar", "lace", "--along", "line:-5"],
+        vec!["synth", "--exemplar", "lace", "--along", "rect:100"],
+        vec!["synth", "--exemplar", "lace", "--along", "line:100", "--band", "0"],
+        vec!["synth", "--exemplar", "lace", "--along", "line:100", "--thickness", "-1"],
+    ] {
+        let out = tracery().args(&args).output().unwrap();
+        assert!(!out.status.success(), "{args:?}");
+        let err = String::from_utf8(out.stderr).unwrap();
+        assert!(err.starts_with("tracery: ") && err.trim().lines().count() == 1, "{args:?}: {err}");
+    }
+}
+
+#[test]
+fn curves_from_svg_and_rectangles() {
+    let dir = tempdir("shapes");
+    let path = dir.join("curve.svg");
+    std::fs::write(
+        &path,
+        r#"<svg xmlns="http://www.w3.org/2000/svg" viewBox="0 0 200 100"><path d="M10,50 C60,0 140,100 190,50" fill="none" stroke="black"/></svg>"#,
+    )
+    .unwrap();
+    let report = dir.join("curve.json");
+    let out = tracery()
+        .args(["synth", "--exemplar", "vine", "--along"])
+        .arg(format!("svg:{}", path.display()))
+        .arg("--report")
+        .arg(&report)
+        .output()
+        .unwrap();
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    let json = std::fs::read_to_string(&report).unwrap();
+    assert_eq!(field(&json, "components"), "1");
+    assert!(field(&json, "length_mm").parse::<f64>().unwrap() > 190.0);
+
+    let stl = dir.join("rect.stl");
+    let report = dir.join("rect.json");
+    let out = tracery()
+        .args(["synth", "--exemplar", "lace", "--along", "rect:80x50", "--band", "10", "--stl"])
+        .arg(&stl)
+        .arg("--report")
+        .arg(&report)
+        .output()
+        .unwrap();
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    let json = std::fs::read_to_string(&report).unwrap();
+    assert_eq!(field(&json, "components"), "1");
+    let check = check_stl(&stl);
+    assert_eq!((check.open_edges, check.shells), (0, 1), "{check:?}");
+    assert!(check.triangles > 100);
+}
+
+fn tempdir(name: &str) -> std::path::PathBuf {
+    let dir = std::env::temp_dir().join(format!("tracery-test-{}-{name}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).unwrap();
+    dir
+}
