@@ -6,17 +6,26 @@ use std::time::Instant;
 use anyhow::{Context, Result, anyhow, bail};
 use clap::{Parser, Subcommand};
 use serde::Serialize;
+
+use crate::files::write_atomically;
 use tracery_core::{
     BUILTIN_NAMES, Control, Curve, Exemplar, LoadOptions, PieceSet, SliceOptions, SlicingMode, Synthesis,
     SynthesisRequest, Target, Timings, builtin, extrude, region_to_svg, synthesize, synthesize_rectangle,
 };
 
-/// Tracery: synthesize printable patterns along curves.
+/// Tracery: synthesize printable patterns along curves. Without a command, opens the app.
 #[derive(Parser, Debug)]
 #[command(name = "tracery", version, about, allow_negative_numbers = true)]
 pub struct Cli {
     #[command(subcommand)]
-    command: Command,
+    command: Option<Command>,
+}
+
+impl Cli {
+    /// Whether the command line asks for the app window rather than a command.
+    pub fn wants_app(&self) -> bool {
+        self.command.is_none()
+    }
 }
 
 #[derive(Subcommand, Debug)]
@@ -178,16 +187,6 @@ fn target_text(t: Target) -> String {
     }
 }
 
-/// Writes `bytes` to `path` through a temporary file, so a failure never leaves a partial file.
-fn write_atomically(path: &Path, bytes: &[u8]) -> Result<()> {
-    let dir = path.parent().filter(|p| !p.as_os_str().is_empty()).unwrap_or(Path::new("."));
-    let name = path.file_name().ok_or_else(|| anyhow!("'{}' is not a file name", path.display()))?;
-    let temp = dir.join(format!(".{}.partial", name.to_string_lossy()));
-    std::fs::write(&temp, bytes).with_context(|| format!("could not write {}", path.display()))?;
-    std::fs::rename(&temp, path).with_context(|| format!("could not write {}", path.display()))?;
-    Ok(())
-}
-
 fn synth(args: SynthArgs) -> Result<()> {
     let exemplar = load_exemplar(&args.exemplar)?;
     let along = parse_along(&args.along)?;
@@ -285,7 +284,8 @@ fn list() -> Result<()> {
 /// Runs the command line.
 pub fn run(cli: Cli) -> Result<()> {
     match cli.command {
-        Command::List => list(),
-        Command::Synth(args) => synth(*args),
+        Some(Command::List) => list(),
+        Some(Command::Synth(args)) => synth(*args),
+        None => Ok(()),
     }
 }

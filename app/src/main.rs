@@ -1,11 +1,11 @@
-//! The `tracery` command.
+//! The `tracery` command: the app window, or a command-line tool with a subcommand.
 
 use std::process::ExitCode;
 
 use clap::Parser;
 use clap::error::ErrorKind;
 
-mod cli;
+use tracery::cli;
 
 fn main() -> ExitCode {
     let cli = match cli::Cli::try_parse() {
@@ -18,6 +18,15 @@ fn main() -> ExitCode {
             return ExitCode::from(2);
         }
     };
+    if cli.wants_app() {
+        return match run_app() {
+            Ok(()) => ExitCode::SUCCESS,
+            Err(e) => {
+                eprintln!("tracery: {e}");
+                ExitCode::FAILURE
+            }
+        };
+    }
     match cli::run(cli) {
         Ok(()) => ExitCode::SUCCESS,
         Err(e) => {
@@ -27,4 +36,17 @@ fn main() -> ExitCode {
             ExitCode::FAILURE
         }
     }
+}
+
+fn run_app() -> eframe::Result {
+    let options = eframe::NativeOptions {
+        viewport: egui::ViewportBuilder::default()
+            .with_title("Tracery")
+            .with_inner_size([1280.0, 800.0])
+            .with_min_inner_size([720.0, 480.0])
+            .with_drag_and_drop(true),
+        persist_window: true,
+        ..Default::default()
+    };
+    eframe::run_native("Tracery", options, Box::new(|cc| Ok(Box::new(tracery::TraceryApp::new(cc)))))
 }

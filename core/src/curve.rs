@@ -12,6 +12,8 @@ pub struct Curve {
     points: Vec<DVec2>,
     /// Arc length at each point.
     arc: Vec<f64>,
+    /// Unit tangent at each point, smoothed over a few segments.
+    tangents: Vec<DVec2>,
     closed: bool,
 }
 
@@ -59,7 +61,30 @@ impl Curve {
         if acc <= 0.0 {
             return Err(CurveError::TooShort);
         }
-        Ok(Curve { points: pts, arc, closed })
+        let mut curve = Curve { points: pts, arc, tangents: Vec::new(), closed };
+        curve.tangents = curve.smoothed_tangents();
+        Ok(curve)
+    }
+
+    /// Tangents at the points, each the direction of the chord across a
+    /// window of four mean segments. A polyline's own tangent turns only at
+    /// its vertices, and unevenly after resampling; an offset of the curve by
+    /// `v` folds wherever the tangent turns faster than `1/v`, so the band
+    /// needs a frame whose turning is spread evenly.
+    fn smoothed_tangents(&self) -> Vec<DVec2> {
+        let n = self.points.len();
+        let window = 2.0 * self.length() / (n - 1) as f64;
+        self.arc
+            .iter()
+            .enumerate()
+            .map(|(k, &a)| {
+                let chord = self.point(a + window) - self.point(a - window);
+                chord.try_normalize().unwrap_or_else(|| {
+                    let (i, j) = if k + 1 < n { (k, k + 1) } else { (k - 1, k) };
+                    (self.points[j] - self.points[i]).normalize_or(DVec2::X)
+                })
+            })
+            .collect()
     }
 
     /// A curve from a person's stroke: smoothed (Chaikin corner cutting) and
@@ -155,40 +180,14 @@ impl Curve {
         self.points[k].lerp(self.points[k + 1], t)
     }
 
-    fn segment_tangent(&self, k: usize) -> DVec2 {
-        (self.points[k + 1] - self.points[k]).normalize_or(DVec2::X)
-    }
-
-    /// The unit tangent at arc length `u`, blended between segments so that it
-    /// turns continuously.
+    /// The unit tangent at arc length `u`, interpolated between the smoothed
+    /// tangents of the points so that it turns continuously and evenly.
     pub fn tangent(&self, u: f64) -> DVec2 {
         let (k, t) = self.locate(u);
-        let segments = self.points.len() - 1;
-        let here = self.segment_tangent(k);
-        // Blend with the neighbouring segment over the half of the segment next to it.
-        let (other, w) = if t < 0.5 {
-            let prev = if k > 0 {
-                Some(k - 1)
-            } else if self.closed {
-                Some(segments - 1)
-            } else {
-                None
-            };
-            (prev.map(|p| self.segment_tangent(p)), 0.5 - t)
-        } else {
-            let next = if k + 1 < segments {
-                Some(k + 1)
-            } else if self.closed {
-                Some(0)
-            } else {
-                None
-            };
-            (next.map(|p| self.segment_tangent(p)), t - 0.5)
-        };
-        match other {
-            Some(o) => (here * (1.0 - w) + o * w).normalize_or(here),
-            None => here,
+        if self.tangents.is_empty() {
+            return (self.points[k + 1] - self.points[k]).normalize_or(DVec2::X);
         }
+        self.tangents[k].lerp(self.tangents[k + 1], t).normalize_or(self.tangents[k])
     }
 
     /// The unit left normal at arc length `u`.

@@ -1,0 +1,191 @@
+//! The desktop app, driven like a person would: with egui_kittest.
+
+use std::path::PathBuf;
+use std::time::{Duration, Instant};
+
+use egui::accesskit::Role;
+use egui::{Event, Key, Modifiers, PointerButton, Pos2};
+use egui_kittest::Harness;
+use egui_kittest::kittest::Queryable;
+use tracery::TraceryApp;
+use tracery::dialogs::{FileKind, ScriptedDialogs};
+use tracery::worker::JobState;
+
+#[path = "common/stl.rs"]
+mod stl;
+
+fn harness(answers: Vec<(FileKind, PathBuf)>) -> Harness<'static, TraceryApp> {
+    Harness::builder()
+        .with_size(egui::vec2(1280.0, 800.0))
+        .build_eframe(move |_| TraceryApp::with(Box::new(ScriptedDialogs { answers }), None))
+}
+
+/// Steps the UI until every pattern is done (the worker runs on its own threads).
+fn settle(harness: &mut Harness<'static, TraceryApp>) {
+    let deadline = Instant::now() + Duration::from_secs(60);
+    loop {
+        harness.step();
+        let app = harness.state();
+        let done = !app.busy() && app.doc.curves.iter().all(|c| matches!(app.job_state(c.id), Some(JobState::Done(_))));
+        if done || Instant::now() > deadline {
+            break;
+        }
+        std::thread::sleep(Duration::from_millis(20));
+    }
+    harness.step();
+}
+
+fn press(harness: &Harness<'static, TraceryApp>, pos: Pos2, pressed: bool) {
+    harness.event(Event::PointerButton { pos, button: PointerButton::Primary, pressed, modifiers: Modifiers::NONE });
+}
+
+/// Drags along `points` with the primary button, one frame per point.
+fn drag(harness: &mut Harness<'static, TraceryApp>, points: &[Pos2]) {
+    harness.hover_at(points[0]);
+    harness.step();
+    press(harness, points[0], true);
+    harness.step();
+    for &p in &points[1..] {
+        harness.hover_at(p);
+        harness.step();
+    }
+    press(harness, *points.last().unwrap(), false);
+    harness.step();
+}
+
+/// A loop drawn on the canvas: a circle of `radius` points around `center`.
+fn circle(center: Pos2, radius: f32) -> Vec<Pos2> {
+    (0..=64)
+        .map(|k| {
+            let a = k as f32 / 64.0 * std::f32::consts::TAU;
+            center + egui::vec2(radius * a.cos(), radius * a.sin())
+        })
+        .collect()
+}
+
+#[test]
+fn a_drag_on_the_canvas_yields_a_pattern() {
+    let mut harness = harness(vec![]);
+    harness.step();
+    drag(&mut harness, &circle(Pos2::new(760.0, 400.0), 110.0));
+    settle(&mut harness);
+    let app = harness.state();
+    assert_eq!(app.doc.curves.len(), 1);
+    let curve = &app.doc.curves[0];
+    assert!(curve.closed, "a stroke ending at its start closes into a loop");
+    let output = app.output(curve.id).expect("a pattern");
+    assert_eq!(output.topology.components, 1);
+    assert_eq!(output.topology.loop_openings, 1, "the default pattern runs around the loop");
+    assert!(!output.fill.is_empty());
+    // The status bar tells what was found.
+    harness.get_by_label_contains("1 component(s)");
+}
+
+#[test]
+fn moving_a_slider_yields_a_new_result() {
+    let mut harness = harness(vec![]);
+    harness.step();
+    let wave: Vec<Pos2> =
+        (0..=40).map(|k| Pos2::new(450.0 + k as f32 * 15.0, 400.0 + 60.0 * (k as f32 / 6.0).sin())).collect();
+    drag(&mut harness, &wave);
+    settle(&mut harness);
+    let id = harness.state().doc.curves[0].id;
+    let first = harness.state().output(id).expect("a first pattern").clone();
+    let band_before = harness.state().doc.curves[0].settings.band_mm;
+    harness.get_by_role_and_label(Role::Slider, "Band width (mm)").focus();
+    harness.step();
+    for _ in 0..10 {
+        harness.key_press(Key::ArrowRight);
+        harness.step();
+    }
+    settle(&mut harness);
+    let app = harness.state();
+    assert!(app.doc.curves[0].settings.band_mm > band_before);
+    let second = app.output(id).expect("a second pattern");
+    assert!(!std::sync::Arc::ptr_eq(&first, second), "the pattern was synthesized again");
+    let width = |o: &tracery::worker::Output| {
+        let b = o.region.bounds().unwrap();
+        b.height()
+    };
+    assert!(width(second) > width(&first), "a wider band gives a taller pattern along a horizontal wave");
+}
+
+#[test]
+fn export_writes_a_valid_stl() {
+    let path = std::env::temp_dir().join(format!("tracery-app-{}.stl", std::process::id()));
+    let _ = std::fs::remove_file(&path);
+    let mut harness = harness(vec![(FileKind::ExportStl, path.clone())]);
+    harness.step();
+    drag(&mut harness, &circle(Pos2::new(700.0, 380.0), 90.0));
+    let wave: Vec<Pos2> =
+        (0..=30).map(|k| Pos2::new(420.0 + k as f32 * 20.0, 700.0 + 30.0 * (k as f32 / 4.0).sin())).collect();
+    drag(&mut harness, &wave);
+    settle(&mut harness);
+    assert_eq!(harness.state().doc.curves.len(), 2);
+    harness.get_by_label("Export STL…").click();
+    harness.step();
+    let states: Vec<String> = harness
+        .state()
+        .doc
+        .curves
+        .iter()
+        .map(|c| {
+            format!(
+                "{:?}",
+                harness.state().job_state(c.id).map(|s| match s {
+                    JobState::Done(Err(e)) => e.clone(),
+                    _ => "ok".into(),
+                })
+            )
+        })
+        .collect();
+    assert!(path.exists(), "no STL written: {:?} {states:?}", harness.state().message);
+    let check = stl::check_stl(&path);
+    assert_eq!((check.open_edges, check.misoriented_edges), (0, 0), "{check:?}");
+    let components: usize =
+        harness.state().doc.curves.iter().map(|c| harness.state().output(c.id).unwrap().topology.components).sum();
+    assert_eq!(check.shells, components);
+    assert_eq!(check.shells, 2, "one part per curve");
+    assert!(check.triangles > 100);
+    let _ = std::fs::remove_file(&path);
+}
+
+#[test]
+fn a_broken_svg_import_shows_an_error_and_changes_nothing() {
+    let path = std::env::temp_dir().join(format!("tracery-broken-{}.svg", std::process::id()));
+    std::fs::write(&path, "<svg xmlns='http://www.w3.org/2000/svg'><path d='M0 0 L10").unwrap();
+    let mut harness = harness(vec![(FileKind::ImportSvg, path.clone())]);
+    harness.step();
+    drag(&mut harness, &circle(Pos2::new(700.0, 400.0), 80.0));
+    settle(&mut harness);
+    let before = harness.state().doc.clone();
+    harness.get_by_label("Import SVG…").click();
+    harness.step();
+    harness.step();
+    let app = harness.state();
+    assert_eq!(app.doc, before, "the document is unchanged");
+    let (message, error) = app.message.clone().expect("a message");
+    assert!(error && message.starts_with("Could not import"), "{message}");
+    harness.get_by_label_contains("Could not import");
+    let _ = std::fs::remove_file(&path);
+}
+
+#[test]
+fn undo_restores_a_deleted_curve() {
+    let mut harness = harness(vec![]);
+    harness.step();
+    drag(&mut harness, &circle(Pos2::new(700.0, 400.0), 80.0));
+    settle(&mut harness);
+    let drawn = harness.state().doc.clone();
+    assert_eq!(drawn.curves.len(), 1);
+    assert!(harness.state().selected.is_some(), "a new curve is selected");
+    harness.key_press(Key::Delete);
+    harness.step();
+    assert!(harness.state().doc.curves.is_empty());
+    harness.key_press_modifiers(Modifiers::COMMAND, Key::Z);
+    harness.step();
+    assert_eq!(harness.state().doc, drawn);
+    harness.key_press_modifiers(Modifiers::COMMAND, Key::Y);
+    harness.step();
+    assert!(harness.state().doc.curves.is_empty(), "redo deletes it again");
+}
