@@ -15,8 +15,14 @@ use tracery_core::DVec2;
 
 fn settle(harness: &mut Harness<'static, TraceryApp>) {
     let deadline = Instant::now() + Duration::from_secs(120);
-    while harness.state().busy() && Instant::now() < deadline {
+    loop {
         harness.step();
+        let app = harness.state();
+        let done = !app.busy()
+            && app.doc.curves.iter().all(|c| matches!(app.job_state(c.id), Some(tracery::worker::JobState::Done(_))));
+        if done || Instant::now() > deadline {
+            break;
+        }
         std::thread::sleep(Duration::from_millis(20));
     }
     harness.run_steps(3);

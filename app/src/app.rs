@@ -36,6 +36,8 @@ struct Persisted {
     show_seams: bool,
     show_3d: bool,
     export_selected_only: bool,
+    /// Where "Quick export" writes, for desktops without file dialogs.
+    export_folder: PathBuf,
     orbit: Orbit,
     project_path: Option<PathBuf>,
 }
@@ -50,6 +52,7 @@ impl Default for Persisted {
             show_seams: false,
             show_3d: false,
             export_selected_only: false,
+            export_folder: default_export_folder(),
             orbit: Orbit::default(),
             project_path: None,
         }
@@ -72,6 +75,10 @@ struct ExemplarPicture {
 }
 
 const STORAGE_KEY: &str = "tracery";
+
+fn default_export_folder() -> PathBuf {
+    std::env::var_os("HOME").map_or_else(|| PathBuf::from("."), |h| PathBuf::from(h).join("Tracery"))
+}
 const AUTOSAVE_EVERY: Duration = Duration::from_secs(2);
 
 /// The app: a document of curves, a canvas, controls, and a background worker.
@@ -313,6 +320,22 @@ impl TraceryApp {
         });
     }
 
+    /// Writes STL and SVG into the export folder under a new name.
+    pub fn quick_export(&mut self) {
+        let folder = self.state.export_folder.clone();
+        if let Err(e) = std::fs::create_dir_all(&folder) {
+            self.message = Some((format!("Could not create {}: {e}", folder.display()), true));
+            return;
+        }
+        let stamp = std::time::SystemTime::now().duration_since(std::time::UNIX_EPOCH).map_or(0, |d| d.as_secs());
+        let stl = folder.join(format!("tracery-{stamp}.stl"));
+        self.export_stl_to(&stl);
+        if matches!(self.message, Some((_, false))) {
+            self.export_svg_to(&folder.join(format!("tracery-{stamp}.svg")));
+            self.message = Some((format!("Exported {} and .svg", stl.display()), false));
+        }
+    }
+
     fn export_svg_to(&mut self, path: &std::path::Path) {
         let ids = self.export_ids();
         let mut region = Region::default();
@@ -351,10 +374,11 @@ impl TraceryApp {
         {
             self.open_project(&p);
         }
-        if pressed(shortcut(Modifiers::COMMAND, Key::E))
-            && let Some(p) = self.dialogs.pick(FileKind::ExportStl)
-        {
-            self.export_stl_to(&p);
+        if pressed(shortcut(Modifiers::COMMAND, Key::E)) {
+            match self.dialogs.pick(FileKind::ExportStl) {
+                Some(p) => self.export_stl_to(&p),
+                None => self.message = Some(("No file chosen; Quick export writes without a dialog".into(), false)),
+            }
         }
         let typing = ctx.egui_wants_keyboard_input();
         if !typing && ctx.input(|i| i.key_pressed(Key::Delete) || i.key_pressed(Key::Backspace)) {
@@ -593,6 +617,20 @@ impl TraceryApp {
         });
         ui.checkbox(&mut self.state.export_selected_only, "Export the selected curve only");
         ui.horizontal(|ui| {
+            if ui
+                .button("Quick export")
+                .on_hover_text("Writes STL and SVG into the folder below, without a dialog")
+                .clicked()
+            {
+                self.quick_export();
+            }
+            let mut folder = self.state.export_folder.display().to_string();
+            let label = ui.label("to");
+            if ui.add(egui::TextEdit::singleline(&mut folder).desired_width(150.0)).labelled_by(label.id).changed() {
+                self.state.export_folder = PathBuf::from(folder);
+            }
+        });
+        ui.horizontal(|ui| {
             if ui.add_enabled(self.history.can_undo(), egui::Button::new("Undo")).clicked() {
                 self.undo();
             }
@@ -603,11 +641,6 @@ impl TraceryApp {
                 self.delete_selected();
             }
         });
-        ui.separator();
-        ui.label(RichText::new("View").strong());
-        ui.checkbox(&mut self.state.show_band, "Band outline");
-        ui.checkbox(&mut self.state.show_seams, "Piece seams");
-        ui.checkbox(&mut self.state.show_3d, "3D preview");
     }
 
     fn status_ui(&mut self, ui: &mut egui::Ui) {
@@ -678,7 +711,8 @@ impl TraceryApp {
         if response.drag_started_by(PointerButton::Middle) || response.drag_started_by(PointerButton::Secondary) {
             self.drag = Some(Drag::Pan);
         } else if response.drag_started_by(PointerButton::Primary)
-            && let Some(p) = pointer.map(world)
+            // Start where the button went down, not where the drag was recognised.
+            && let Some(p) = ui.input(|i| i.pointer.press_origin()).or(pointer).map(world)
         {
             self.drag = Some(self.begin_drag(p, rect));
         }
@@ -829,7 +863,7 @@ impl TraceryApp {
     }
 
     fn finish_stroke(&mut self, raw: &[DVec2], _rect: egui::Rect) {
-        let close_mm = 12.0 / f64::from(self.state.view.points_per_mm);
+        let close_mm = 20.0 / f64::from(self.state.view.points_per_mm);
         let Some((points, closed)) = canvas::stroke_to_control_points(raw, 6.0, close_mm) else { return };
         let mut settings = self.state.defaults.clone();
         if let Some(item) = self.selected.and_then(|id| self.doc.curve(id)) {
@@ -861,7 +895,12 @@ impl eframe::App for TraceryApp {
             ui.horizontal(|ui| {
                 ui.heading("Tracery");
                 ui.label(RichText::new("pattern brush").weak());
+                ui.separator();
+                ui.checkbox(&mut self.state.show_band, "Band outline");
+                ui.checkbox(&mut self.state.show_seams, "Piece seams");
+                ui.checkbox(&mut self.state.show_3d, "3D preview");
                 if let Some(p) = &self.state.project_path {
+                    ui.separator();
                     ui.label(RichText::new(p.display().to_string()).weak());
                 }
             });
