@@ -1,7 +1,6 @@
 //! The desktop app, driven like a person would: with egui_kittest.
 
 use std::path::PathBuf;
-use std::time::{Duration, Instant};
 
 use egui::accesskit::Role;
 use egui::{Event, Key, Modifiers, PointerButton, Pos2};
@@ -13,26 +12,14 @@ use tracery::worker::JobState;
 
 #[path = "common/stl.rs"]
 mod stl;
+#[path = "common/ui.rs"]
+mod ui;
+use ui::settle;
 
 fn harness(answers: Vec<(FileKind, PathBuf)>) -> Harness<'static, TraceryApp> {
     Harness::builder()
         .with_size(egui::vec2(1280.0, 800.0))
         .build_eframe(move |_| TraceryApp::with(Box::new(ScriptedDialogs { answers }), None))
-}
-
-/// Steps the UI until every pattern is done (the worker runs on its own threads).
-fn settle(harness: &mut Harness<'static, TraceryApp>) {
-    let deadline = Instant::now() + Duration::from_secs(60);
-    loop {
-        harness.step();
-        let app = harness.state();
-        let done = !app.busy() && app.doc.curves.iter().all(|c| matches!(app.job_state(c.id), Some(JobState::Done(_))));
-        if done || Instant::now() > deadline {
-            break;
-        }
-        std::thread::sleep(Duration::from_millis(20));
-    }
-    harness.step();
 }
 
 fn press(harness: &Harness<'static, TraceryApp>, pos: Pos2, pressed: bool) {

@@ -3,30 +3,17 @@
 //!
 //! `cargo test -p tracery --test screenshots -- --ignored`
 
-use std::path::Path;
-use std::time::{Duration, Instant};
-
 use egui_kittest::Harness;
 use egui_kittest::kittest::Queryable;
+use std::path::Path;
 use tracery::TraceryApp;
 use tracery::dialogs::ScriptedDialogs;
 use tracery::document::{Count, ExemplarRef, PatternSettings};
 use tracery_core::DVec2;
 
-fn settle(harness: &mut Harness<'static, TraceryApp>) {
-    let deadline = Instant::now() + Duration::from_secs(120);
-    loop {
-        harness.step();
-        let app = harness.state();
-        let done = !app.busy()
-            && app.doc.curves.iter().all(|c| matches!(app.job_state(c.id), Some(tracery::worker::JobState::Done(_))));
-        if done || Instant::now() > deadline {
-            break;
-        }
-        std::thread::sleep(Duration::from_millis(20));
-    }
-    harness.run_steps(3);
-}
+#[path = "common/ui.rs"]
+mod ui;
+use ui::settle;
 
 fn save(harness: &mut Harness<'static, TraceryApp>, name: &str) {
     let image = harness.render().expect("rendering through wgpu");

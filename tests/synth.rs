@@ -152,33 +152,26 @@ fn curves_from_svg_and_rectangles() {
     )
     .unwrap();
     let report = dir.join("curve.json");
-    let out = tracery()
-        .args(["synth", "--exemplar", "vine", "--along"])
-        .arg(format!("svg:{}", path.display()))
-        .arg("--report")
-        .arg(&report)
-        .output()
-        .unwrap();
-    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
-    let json = std::fs::read_to_string(&report).unwrap();
+    let json = synth_report(&["--exemplar", "vine", "--along", &format!("svg:{}", path.display())], &report);
     assert_eq!(field(&json, "components"), "1");
     assert!(field(&json, "length_mm").parse::<f64>().unwrap() > 190.0);
 
     let stl = dir.join("rect.stl");
-    let report = dir.join("rect.json");
-    let out = tracery()
-        .args(["synth", "--exemplar", "lace", "--along", "rect:80x50", "--band", "10", "--stl"])
-        .arg(&stl)
-        .arg("--report")
-        .arg(&report)
-        .output()
-        .unwrap();
-    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
-    let json = std::fs::read_to_string(&report).unwrap();
+    let json = synth_report(
+        &["--exemplar", "lace", "--along", "rect:80x50", "--band", "10", "--stl", &stl.display().to_string()],
+        &dir.join("rect.json"),
+    );
     assert_eq!(field(&json, "components"), "1");
     let check = check_stl(&stl);
     assert_eq!((check.open_edges, check.shells), (0, 1), "{check:?}");
     assert!(check.triangles > 100);
+}
+
+/// Runs `tracery synth ARGS --report REPORT`, which must succeed, and returns the report.
+fn synth_report(args: &[&str], report: &std::path::Path) -> String {
+    let out = tracery().arg("synth").args(args).arg("--report").arg(report).output().unwrap();
+    assert!(out.status.success(), "{args:?}: {}", String::from_utf8_lossy(&out.stderr));
+    std::fs::read_to_string(report).unwrap()
 }
 
 fn tempdir(name: &str) -> std::path::PathBuf {
