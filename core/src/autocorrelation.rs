@@ -54,13 +54,14 @@ impl Similarity {
 
 impl Autocorrelation {
     /// The autocorrelation of the sequence extended by `piece`.
+    #[inline]
     pub fn push(&self, piece: usize, similarity: &Similarity) -> Autocorrelation {
         let p = piece.min(255) as u8;
         let mut next = *self;
-        for j in 0..usize::from(self.filled) {
-            next.sums[j] = next.sums[j].saturating_add(similarity.table[usize::from(self.history[j].abs_diff(p))]);
+        for (sum, &h) in next.sums.iter_mut().zip(self.history.iter()).take(usize::from(self.filled)) {
+            *sum = sum.saturating_add(similarity.table[usize::from(h.abs_diff(p))]);
         }
-        next.max = next.sums.iter().copied().max().unwrap_or(0);
+        next.max = next.sums.iter().copied().fold(0, u16::max);
         next.history.copy_within(0..LAGS - 1, 1);
         next.history[0] = p;
         next.filled = (self.filled + 1).min(LAGS as u8);

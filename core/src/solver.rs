@@ -104,7 +104,7 @@ pub struct SolveOptions {
     pub variety: f64,
     /// σ of the autocorrelation similarity, in piece indices.
     pub autocorrelation_sigma: f64,
-    /// Length quantum in exemplar units; `None` picks a quarter of the
+    /// Length quantum in exemplar units; `None` picks a third of the
     /// narrowest piece (at most a fiftieth of ε).
     pub length_quantum: Option<f64>,
     /// Most DP states held at once before giving up with an error.
@@ -189,7 +189,7 @@ impl LengthGrid {
     pub fn new(set: &PieceSet, options: &SolveOptions) -> Self {
         let narrowest = set.pieces.iter().map(|p| p.width).fold(f64::INFINITY, f64::min);
         let epsilon = options.length_tolerance * options.target_length;
-        let quantum = options.length_quantum.unwrap_or_else(|| (narrowest / 4.0).min(epsilon / 50.0).max(1e-12));
+        let quantum = options.length_quantum.unwrap_or_else(|| (narrowest / 3.0).min(epsilon / 50.0).max(1e-12));
         LengthGrid { quantum, target: (options.target_length / quantum).round() as u32 }
     }
 
@@ -216,6 +216,35 @@ struct State {
     descriptor: u32,
     delta: f32,
     piece: u16,
+}
+
+/// The states of one length, indexed by `descriptor × pieces + piece`.
+#[derive(Default)]
+struct Bucket {
+    slots: Vec<u32>,
+    /// Occupied slots, in insertion order (which is also the expansion order).
+    occupied: Vec<u32>,
+}
+
+impl Bucket {
+    fn get(&self, key: usize) -> Option<u32> {
+        self.slots.get(key).copied().filter(|&i| i != NO_PARENT)
+    }
+
+    fn insert(&mut self, key: usize, index: u32) {
+        if key >= self.slots.len() {
+            self.slots.resize((key + 1).next_power_of_two(), NO_PARENT);
+        }
+        self.slots[key] = index;
+        self.occupied.push(key as u32);
+    }
+
+    /// Moves the state indices out, leaving the bucket empty for reuse.
+    fn drain_into(&mut self, out: &mut Vec<u32>) {
+        for key in self.occupied.drain(..) {
+            out.push(std::mem::replace(&mut self.slots[key as usize], NO_PARENT));
+        }
+    }
 }
 
 /// Descriptors seen in one search, with memoized joins.
@@ -366,8 +395,8 @@ struct Search<'p> {
     /// Variety history per state, only when the variety term is on.
     auto: Vec<Autocorrelation>,
     /// States by length, modulo the widest piece: only lengths within one
-    /// piece of the current one are ever open, and their maps are reused.
-    buckets: Vec<FxHashMap<u64, u32>>,
+    /// piece of the current one are ever open, and their tables are reused.
+    buckets: Vec<Bucket>,
     best: Option<(f64, u32)>,
 }
 
@@ -385,7 +414,7 @@ impl<'p> Search<'p> {
             interner: Interner::new(n),
             arena: Vec::new(),
             auto: Vec::new(),
-            buckets: (0..ring).map(|_| FxHashMap::default()).collect(),
+            buckets: (0..ring).map(|_| Bucket::default()).collect(),
             best: None,
         }
     }
@@ -409,10 +438,11 @@ impl<'p> Search<'p> {
         penalty_floor: f64,
         correlation: impl FnOnce(&Self) -> Autocorrelation,
     ) -> Result<(), SolveError> {
-        let key = u64::from(state.piece) << 32 | u64::from(state.descriptor);
+        // Descriptor ids are dense and few: a state's key indexes a table.
+        let key = state.descriptor as usize * self.problem.n() + usize::from(state.piece);
         let slot = length as usize % self.buckets.len();
         let variety = self.variety();
-        if let Some(&existing) = self.buckets[slot].get(&key) {
+        if let Some(existing) = self.buckets[slot].get(key) {
             let old = &self.arena[existing as usize];
             let old_total = if variety { self.total(old, &self.auto[existing as usize]) } else { old.cost };
             if old_total <= state.cost + penalty_floor {
@@ -469,7 +499,7 @@ impl<'p> Search<'p> {
             problem.report_progress();
             let slot = length as usize % self.buckets.len();
             open.clear();
-            open.extend(self.buckets[slot].drain().map(|(_, index)| index));
+            self.buckets[slot].drain_into(&mut open);
             for &index in &open {
                 let state = self.arena[index as usize];
                 let a = state.piece as usize;
