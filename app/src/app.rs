@@ -714,7 +714,7 @@ impl TraceryApp {
             // Start where the button went down, not where the drag was recognised.
             && let Some(p) = ui.input(|i| i.pointer.press_origin()).or(pointer).map(world)
         {
-            self.drag = Some(self.begin_drag(p, rect));
+            self.drag = Some(self.begin_drag(p));
         }
         if response.dragged() {
             match &mut self.drag {
@@ -752,7 +752,7 @@ impl TraceryApp {
         }
         if response.drag_stopped() {
             if let Some(Drag::Stroke(points)) = self.drag.take() {
-                self.finish_stroke(&points, rect);
+                self.finish_stroke(&points);
             }
             self.drag = None;
         }
@@ -833,7 +833,7 @@ impl TraceryApp {
         );
     }
 
-    fn begin_drag(&mut self, p: DVec2, _rect: egui::Rect) -> Drag {
+    fn begin_drag(&mut self, p: DVec2) -> Drag {
         let tolerance = 8.0 / f64::from(self.state.view.points_per_mm);
         if self.state.tool == Tool::Edit {
             if let Some(item) = self.selected.and_then(|id| self.doc.curve(id))
@@ -862,7 +862,7 @@ impl TraceryApp {
             .map(|(_, id)| id)
     }
 
-    fn finish_stroke(&mut self, raw: &[DVec2], _rect: egui::Rect) {
+    fn finish_stroke(&mut self, raw: &[DVec2]) {
         let close_mm = 20.0 / f64::from(self.state.view.points_per_mm);
         let Some((points, closed)) = canvas::stroke_to_control_points(raw, 6.0, close_mm) else { return };
         let mut settings = self.state.defaults.clone();

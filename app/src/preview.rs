@@ -1,6 +1,6 @@
 //! The 3D preview: the extruded mesh, shaded, orbited by dragging.
 
-use egui::{Color32, Pos2, Rect, Sense, Shape};
+use egui::{Color32, Pos2, Sense, Shape};
 use serde::{Deserialize, Serialize};
 use tracery_core::Mesh;
 
@@ -111,5 +111,4 @@ pub fn preview_ui(ui: &mut egui::Ui, meshes: &[&Mesh], orbit: &mut Orbit) {
         egui::FontId::proportional(11.0),
         ui.visuals().weak_text_color(),
     );
-    let _ = Rect::NOTHING;
 }

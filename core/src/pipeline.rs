@@ -221,11 +221,8 @@ pub fn synthesize_rectangle(
         geometry: first.timings.geometry + second.timings.geometry,
         mesh: 0.0,
     };
-    let topology = crate::PatternTopology {
-        components: crate::count_topology(&planar.region).components,
-        holes: crate::count_topology(&planar.region).holes,
-        loop_openings: 0,
-    };
+    let counted = crate::count_topology(&planar.region);
+    let topology = crate::PatternTopology { components: counted.components, holes: counted.holes, loop_openings: 0 };
     Ok(Synthesis { warnings: [first.warnings, second.warnings].concat(), topology, planar, timings, ..second })
 }
 
