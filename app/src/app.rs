@@ -74,6 +74,13 @@ struct ExemplarPicture {
     cuts: Vec<f64>,
 }
 
+/// A curve smoothed through its control points, and what it was made from.
+struct Smoothed {
+    points: Vec<[f64; 2]>,
+    closed: bool,
+    curve: Option<tracery_core::Curve>,
+}
+
 const STORAGE_KEY: &str = "tracery";
 
 fn default_export_folder() -> PathBuf {
@@ -98,6 +105,9 @@ pub struct TraceryApp {
     worker: Worker,
     exemplars: HashMap<ExemplarRef, Arc<Exemplar>>,
     pictures: HashMap<(ExemplarRef, Slicing), Option<ExemplarPicture>>,
+    /// Smoothed curves by id, with the control points they were made from:
+    /// smoothing runs when a curve changes, not on every frame.
+    smoothed: HashMap<u64, Smoothed>,
     /// The last message for the status bar, and whether it is an error.
     pub message: Option<(String, bool)>,
     dialogs: Box<dyn Dialogs>,
@@ -142,6 +152,7 @@ impl TraceryApp {
             worker: Worker::default(),
             exemplars: HashMap::new(),
             pictures: HashMap::new(),
+            smoothed: HashMap::new(),
             message: None,
             dialogs,
             autosave_path,
@@ -688,7 +699,24 @@ impl TraceryApp {
         });
     }
 
+    fn refresh_smoothed(&mut self) {
+        let ids: Vec<u64> = self.doc.curves.iter().map(|c| c.id).collect();
+        self.smoothed.retain(|id, _| ids.contains(id));
+        for item in &self.doc.curves {
+            let fresh = self.smoothed.get(&item.id).is_some_and(|s| s.points == item.points && s.closed == item.closed);
+            if !fresh {
+                let smoothed = Smoothed { points: item.points.clone(), closed: item.closed, curve: item.curve() };
+                self.smoothed.insert(item.id, smoothed);
+            }
+        }
+    }
+
+    fn smoothed(&self, id: u64) -> Option<&tracery_core::Curve> {
+        self.smoothed.get(&id).and_then(|s| s.curve.as_ref())
+    }
+
     fn canvas_ui(&mut self, ui: &mut egui::Ui) {
+        self.refresh_smoothed();
         let (response, painter) = canvas::allocate(ui);
         let rect = response.rect;
         let dark = ui.visuals().dark_mode;
@@ -790,7 +818,7 @@ impl TraceryApp {
                     }
                 }
             }
-            if let Some(curve) = item.curve() {
+            if let Some(curve) = self.smoothed(item.id) {
                 let color = if selected {
                     Color32::from_rgb(40, 140, 255)
                 } else {
@@ -855,7 +883,7 @@ impl TraceryApp {
             .iter()
             .filter_map(|c| {
                 let half = 0.5 * c.settings.band_mm;
-                let d = canvas::distance_to(c.curve()?.points(), false, p);
+                let d = canvas::distance_to(self.smoothed(c.id)?.points(), false, p);
                 (d <= tolerance.max(half)).then_some((d, c.id))
             })
             .min_by(|a, b| a.0.total_cmp(&b.0))
