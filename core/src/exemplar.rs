@@ -216,110 +216,89 @@ pub fn first_path_points(data: &[u8]) -> Result<Vec<DVec2>, ExemplarError> {
     let path = first(tree.root()).ok_or(ExemplarError::NothingFilled)?;
     let bbox = tree.root().abs_bounding_box();
     let tolerance = (f64::from(bbox.width()).hypot(f64::from(bbox.height())) * 1e-4).max(1e-9);
-    let t = path.abs_transform();
-    let map = |p: tiny_skia_path::Point| {
-        let (x, y) = (f64::from(p.x), f64::from(p.y));
-        point(
-            f64::from(t.sx) * x + f64::from(t.kx) * y + f64::from(t.tx),
-            f64::from(t.ky) * x + f64::from(t.sy) * y + f64::from(t.ty),
-        )
-    };
-    let mut points: Vec<DVec2> = Vec::new();
-    let mut last = point(0.0, 0.0);
-    let flip = |p: lyon::geom::Point<f64>| DVec2::new(p.x, -p.y);
-    for segment in path.data().segments() {
-        match segment {
-            PathSegment::MoveTo(p) => {
-                if !points.is_empty() {
-                    break;
-                }
-                last = map(p);
-                points.push(flip(last));
+    let points = match flatten_subpaths(path.data(), path.abs_transform(), tolerance).into_iter().next() {
+        Some(Subpath { mut points, closed }) => {
+            if closed && let Some(&first) = points.first() {
+                points.push(first);
             }
-            PathSegment::LineTo(p) => {
-                last = map(p);
-                points.push(flip(last));
-            }
-            PathSegment::QuadTo(c, p) => {
-                let seg = QuadraticBezierSegment { from: last, ctrl: map(c), to: map(p) };
-                seg.for_each_flattened(tolerance, &mut |l: &LineSegment<f64>| points.push(flip(l.to)));
-                last = seg.to;
-            }
-            PathSegment::CubicTo(c1, c2, p) => {
-                let seg = CubicBezierSegment { from: last, ctrl1: map(c1), ctrl2: map(c2), to: map(p) };
-                seg.for_each_flattened(tolerance, &mut |l: &LineSegment<f64>| points.push(flip(l.to)));
-                last = seg.to;
-            }
-            PathSegment::Close => {
-                if let Some(&first) = points.first() {
-                    points.push(first);
-                }
-                break;
-            }
+            points
         }
-    }
+        None => Vec::new(),
+    };
     if points.iter().any(|p| !p.is_finite()) {
         return Err(ExemplarError::NotSimple("the path has a coordinate that is not a number".into()));
     }
     Ok(points)
 }
 
-/// Flattens a path into closed polylines in `(u, v)` (SVG `y` flipped).
-fn flatten(path: &tiny_skia_path::Path, t: usvg::Transform, tolerance: f64) -> Vec<Vec<DVec2>> {
+/// One subpath of a flattened path: its points in `(u, v)` (SVG `y`
+/// flipped), as computed (not yet checked for finiteness), and whether it
+/// ended with a `Z`.
+struct Subpath {
+    points: Vec<DVec2>,
+    closed: bool,
+}
+
+/// Flattens every subpath of `path`, transformed by `t`, within `tolerance`.
+fn flatten_subpaths(path: &tiny_skia_path::Path, t: usvg::Transform, tolerance: f64) -> Vec<Subpath> {
     let map = |p: tiny_skia_path::Point| {
         let (x, y) = (f64::from(p.x), f64::from(p.y));
         let (sx, kx, ky, sy) = (f64::from(t.sx), f64::from(t.kx), f64::from(t.ky), f64::from(t.sy));
         point(sx * x + kx * y + f64::from(t.tx), ky * x + sy * y + f64::from(t.ty))
     };
-    let mut contours: Vec<Vec<DVec2>> = Vec::new();
+    let flip = |p: lyon::geom::Point<f64>| DVec2::new(p.x, -p.y);
+    let mut subpaths: Vec<Subpath> = Vec::new();
     let mut current: Vec<DVec2> = Vec::new();
     let mut last = point(0.0, 0.0);
-    let push = |current: &mut Vec<DVec2>, p: lyon::geom::Point<f64>| {
-        let q = DVec2::new(p.x, -p.y);
-        if q.is_finite() && current.last() != Some(&q) {
-            current.push(q);
-        }
-    };
     for segment in path.segments() {
         match segment {
             PathSegment::MoveTo(p) => {
-                if current.len() >= 3 {
-                    contours.push(std::mem::take(&mut current));
+                if !current.is_empty() {
+                    subpaths.push(Subpath { points: std::mem::take(&mut current), closed: false });
                 }
-                current.clear();
                 last = map(p);
-                push(&mut current, last);
+                current.push(flip(last));
             }
             PathSegment::LineTo(p) => {
                 last = map(p);
-                push(&mut current, last);
+                current.push(flip(last));
             }
             PathSegment::QuadTo(c, p) => {
                 let seg = QuadraticBezierSegment { from: last, ctrl: map(c), to: map(p) };
-                seg.for_each_flattened(tolerance, &mut |l: &LineSegment<f64>| push(&mut current, l.to));
+                seg.for_each_flattened(tolerance, &mut |l: &LineSegment<f64>| current.push(flip(l.to)));
                 last = seg.to;
             }
             PathSegment::CubicTo(c1, c2, p) => {
                 let seg = CubicBezierSegment { from: last, ctrl1: map(c1), ctrl2: map(c2), to: map(p) };
-                seg.for_each_flattened(tolerance, &mut |l: &LineSegment<f64>| push(&mut current, l.to));
+                seg.for_each_flattened(tolerance, &mut |l: &LineSegment<f64>| current.push(flip(l.to)));
                 last = seg.to;
             }
             PathSegment::Close => {
-                if current.len() >= 3 {
-                    contours.push(std::mem::take(&mut current));
+                if !current.is_empty() {
+                    subpaths.push(Subpath { points: std::mem::take(&mut current), closed: true });
                 }
-                current.clear();
             }
         }
     }
-    if current.len() >= 3 {
-        // Fills close open subpaths implicitly.
-        contours.push(current);
+    if !current.is_empty() {
+        subpaths.push(Subpath { points: current, closed: false });
     }
-    for c in &mut contours {
-        if c.len() > 1 && c.first() == c.last() {
-            c.pop();
-        }
-    }
-    contours
+    subpaths
+}
+
+/// Flattens a path into closed polylines for filling: points that are not
+/// numbers and repeated points dropped, open subpaths closed implicitly (as
+/// fills do), and rings of fewer than three points left out.
+fn flatten(path: &tiny_skia_path::Path, t: usvg::Transform, tolerance: f64) -> Vec<Vec<DVec2>> {
+    flatten_subpaths(path, t, tolerance)
+        .into_iter()
+        .filter_map(|Subpath { mut points, .. }| {
+            points.retain(|p| p.is_finite());
+            points.dedup();
+            if points.len() > 1 && points.first() == points.last() {
+                points.pop();
+            }
+            (points.len() >= 3).then_some(points)
+        })
+        .collect()
 }
