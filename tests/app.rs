@@ -63,7 +63,7 @@ fn a_drag_on_the_canvas_yields_a_pattern() {
     let output = app.output(curve.id).expect("a pattern");
     assert_eq!(output.topology.components, 1);
     assert_eq!(output.topology.loop_openings, 1, "the default pattern runs around the loop");
-    assert!(!output.fill.is_empty());
+    assert!(!output.fill_mm.is_empty());
     // The status bar tells what was found.
     harness.get_by_label_contains("1 component(s)");
 }
@@ -78,7 +78,7 @@ fn moving_a_slider_yields_a_new_result() {
     settle(&mut harness);
     let id = harness.state().doc.curves[0].id;
     let first = harness.state().output(id).expect("a first pattern").clone();
-    let band_before = harness.state().doc.curves[0].settings.band_mm;
+    let band_before = harness.state().doc.curves[0].mode.band_mm();
     harness.get_by_role_and_label(Role::Slider, "Band width (mm)").focus();
     harness.step();
     for _ in 0..10 {
@@ -87,11 +87,11 @@ fn moving_a_slider_yields_a_new_result() {
     }
     settle(&mut harness);
     let app = harness.state();
-    assert!(app.doc.curves[0].settings.band_mm > band_before);
+    assert!(app.doc.curves[0].mode.band_mm() > band_before);
     let second = app.output(id).expect("a second pattern");
     assert!(!std::sync::Arc::ptr_eq(&first, second), "the pattern was synthesized again");
-    let width = |o: &tracery::worker::Output| {
-        let b = o.region.bounds().unwrap();
+    let width = |o: &tracery_core::Product| {
+        let b = o.region_mm.bounds().unwrap();
         b.height()
     };
     assert!(width(second) > width(&first), "a wider band gives a taller pattern along a horizontal wave");
@@ -120,7 +120,7 @@ fn export_writes_a_valid_stl() {
             format!(
                 "{:?}",
                 harness.state().job_state(c.id).map(|s| match s {
-                    JobState::Done(Err(e)) => e.clone(),
+                    JobState::Done(Err(e)) => e.to_string(),
                     _ => "ok".into(),
                 })
             )

@@ -11,7 +11,7 @@ fn list_prints_every_builtin() {
     let out = tracery().arg("list").output().unwrap();
     assert!(out.status.success());
     let text = String::from_utf8(out.stdout).unwrap();
-    for name in tracery_core::BUILTIN_NAMES {
+    for name in tracery_core::vector_brush::BUILTIN_NAMES {
         assert!(text.lines().any(|l| l.starts_with(name)), "{name} missing from:\n{text}");
     }
 }

@@ -8,8 +8,9 @@ use egui_kittest::kittest::Queryable;
 use std::path::Path;
 use tracery::TraceryApp;
 use tracery::dialogs::ScriptedDialogs;
-use tracery::document::{Count, ExemplarRef, PatternSettings};
+use tracery::document::{ExemplarRef, ModeSettings, VectorBrushItem};
 use tracery_core::DVec2;
+use tracery_core::vector_brush::Target;
 
 #[path = "common/ui.rs"]
 mod ui;
@@ -37,17 +38,17 @@ fn regenerate_screenshots() {
                 DVec2::new(-40.0 + 30.0 * a.cos(), 8.0 + 30.0 * a.sin())
             })
             .collect();
-        let lace = PatternSettings { variety: 0.4, ..PatternSettings::default() };
+        let mut lace = VectorBrushItem::default();
+        lace.settings.variety = 0.4;
+        let lace = ModeSettings::VectorBrush(lace);
         let id = app.doc.add_curve(bracelet, true, lace);
         let border: Vec<DVec2> =
             (0..=20).map(|k| DVec2::new(5.0 + k as f64 * 4.5, -20.0 + 12.0 * (k as f64 / 3.0).sin())).collect();
-        let vine = PatternSettings {
-            exemplar: ExemplarRef::Builtin("vine".into()),
-            holes: Count::Zero,
-            closed_pattern: false,
-            band_mm: 12.0,
-            ..PatternSettings::default()
-        };
+        let mut vine = VectorBrushItem { exemplar: ExemplarRef::Builtin("vine".into()), ..Default::default() };
+        vine.settings.holes = Target::Exactly(0);
+        vine.settings.closed_pattern = false;
+        vine.settings.band_mm = 12.0;
+        let vine = ModeSettings::VectorBrush(vine);
         app.doc.add_curve(border, false, vine);
         app.selected = Some(id);
     }

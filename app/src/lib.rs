@@ -1,15 +1,22 @@
 //! Tracery's desktop app and command line.
 //!
-//! The app ([`TraceryApp`]) holds a [`document::Document`] of curves and asks a
-//! background [`worker::Worker`] for patterns; it never synthesizes on the UI thread.
+//! The app ([`TraceryApp`]) holds a [`document::Document`] of curves, each
+//! with its mode's settings, and asks a background [`worker::Worker`] for
+//! their products; it never synthesizes on the UI thread.
 
 mod app;
-mod canvas;
+pub mod canvas;
 pub mod cli;
+pub mod command;
+mod command_handling;
 pub mod dialogs;
 pub mod document;
 mod files;
-mod preview;
+pub mod modes;
+pub mod panels;
+pub mod state;
+pub mod tools;
 pub mod worker;
 
-pub use app::{Tool, TraceryApp};
+pub use app::TraceryApp;
+pub use tools::Tool;

@@ -4,7 +4,10 @@
 //! `cargo bench -p tracery-core --bench pipeline`
 
 use criterion::{Criterion, criterion_group, criterion_main};
-use tracery_core::{Control, Curve, SynthesisRequest, builtin, extrude, synthesize};
+use tracery_core::control::Control;
+use tracery_core::curve::Curve;
+use tracery_core::mesh::extrude;
+use tracery_core::vector_brush::{Settings, builtin, synthesize};
 
 fn bench_pipeline(c: &mut Criterion) {
     let mut group = c.benchmark_group("pipeline");
@@ -16,7 +19,8 @@ fn bench_pipeline(c: &mut Criterion) {
     ];
     for (label, name, curve, closed_pattern) in cases {
         let exemplar = builtin(name).unwrap();
-        let mut request = SynthesisRequest::default();
+        let mut request = Settings::default();
+        request.band_mm = 12.0;
         request.closed_pattern = closed_pattern;
         request.variety = 0.3;
         group.bench_function(label, |b| {

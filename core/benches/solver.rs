@@ -5,7 +5,8 @@
 //! `cargo bench -p tracery-core --bench solver`
 
 use criterion::{BenchmarkId, Criterion, criterion_group, criterion_main};
-use tracery_core::{Control, CurveKind, PieceSet, SliceOptions, SolveOptions, Target, builtin, solve};
+use tracery_core::control::Control;
+use tracery_core::vector_brush::{CurveKind, PieceSet, SliceOptions, SolveOptions, Target, builtin, solve};
 
 /// Exemplars with 10 to 20 pieces under the default slicing.
 const EXEMPLARS: &[&str] = &["vine", "braid", "filigree", "tilted"];

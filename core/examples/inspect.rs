@@ -4,7 +4,10 @@
 
 use std::time::Instant;
 
-use tracery_core::{BUILTIN_NAMES, Control, CurveKind, PieceSet, SliceOptions, SolveOptions, Target, builtin, solve};
+use tracery_core::control::Control;
+use tracery_core::vector_brush::{
+    BUILTIN_NAMES, CurveKind, PieceSet, SliceOptions, SolveOptions, Target, builtin, solve,
+};
 
 fn main() {
     let factor: f64 = std::env::args().nth(1).and_then(|a| a.parse().ok()).unwrap_or(5.0);

@@ -4,7 +4,8 @@
 //!
 //! Prints the process's peak resident set (`VmHWM`) before and after solving.
 
-use tracery_core::{Control, CurveKind, PieceSet, SliceOptions, SolveOptions, Target, builtin, solve};
+use tracery_core::control::Control;
+use tracery_core::vector_brush::{CurveKind, PieceSet, SliceOptions, SolveOptions, Target, builtin, solve};
 
 fn peak_kib() -> u64 {
     let status = std::fs::read_to_string("/proc/self/status").unwrap_or_default();

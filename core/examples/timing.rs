@@ -5,7 +5,8 @@
 
 use std::time::Instant;
 
-use tracery_core::{Control, CurveKind, PieceSet, SliceOptions, SolveOptions, Target, builtin, solve};
+use tracery_core::control::Control;
+use tracery_core::vector_brush::{CurveKind, PieceSet, SliceOptions, SolveOptions, Target, builtin, solve};
 
 fn main() {
     let variety: f64 = std::env::args().nth(1).and_then(|v| v.parse().ok()).unwrap_or(0.5);

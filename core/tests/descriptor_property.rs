@@ -3,10 +3,9 @@
 //! (polygon union, then counting rings).
 
 use proptest::prelude::*;
-use tracery_core::{
-    BUILTIN_NAMES, DVec2, PieceSet, Polygon, Region, SliceOptions, SlicingMode, TopologyDescriptor, builtin,
-    count_topology,
-};
+use tracery_core::DVec2;
+use tracery_core::geom::{Polygon, Region, count_topology};
+use tracery_core::vector_brush::{BUILTIN_NAMES, PieceSet, SliceOptions, SlicingMode, TopologyDescriptor, builtin};
 
 /// Lays the pieces out left to right with a gap between them, and bridges
 /// each gap with one quadrilateral per matched portal. Portals on both sides
@@ -118,7 +117,8 @@ fn piece_sets_cached() -> &'static [(String, PieceSet)] {
 
 #[test]
 fn finished_open_sequences_from_the_solver_agree_with_geometry() {
-    use tracery_core::{Control, SolveOptions, Target, solve};
+    use tracery_core::control::Control;
+    use tracery_core::vector_brush::{SolveOptions, Target, solve};
     for (name, set) in piece_sets_cached() {
         for components in [Target::Exactly(1), Target::Any] {
             let mut options = SolveOptions::new(3.0 * set.exemplar_width);

@@ -1,7 +1,8 @@
 //! Loading exemplars from SVG: what is filled, and clear errors on bad input.
 
 use proptest::prelude::*;
-use tracery_core::{BUILTIN_NAMES, Exemplar, ExemplarError, LoadOptions, builtin, builtin_svg, count_topology};
+use tracery_core::geom::count_topology;
+use tracery_core::vector_brush::{BUILTIN_NAMES, Exemplar, ExemplarError, LoadOptions, builtin, builtin_svg};
 
 fn load(svg: &str) -> Result<Exemplar, ExemplarError> {
     Exemplar::from_svg_str("test", svg, &LoadOptions::default())

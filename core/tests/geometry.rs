@@ -1,8 +1,12 @@
 //! From a piece sequence to planar geometry: positioning, stitching, mapping.
 
-use tracery_core::{
-    Control, Curve, CurveKind, DVec2, PieceSet, SliceOptions, SolveOptions, SynthesisRequest, builtin, count_topology,
-    extrude, map_along, planar_topology, position_offsets, solve, stitch, synthesize,
+use tracery_core::DVec2;
+use tracery_core::control::Control;
+use tracery_core::curve::{Curve, map_along, planar_topology};
+use tracery_core::geom::count_topology;
+use tracery_core::mesh::extrude;
+use tracery_core::vector_brush::{
+    CurveKind, PieceSet, Settings, SliceOptions, SolveOptions, builtin, position_offsets, solve, stitch, synthesize,
 };
 
 #[test]
@@ -63,12 +67,17 @@ fn curves_are_parameterized_by_arc_length() {
 fn tight_turns_narrow_the_band_instead_of_folding_it() {
     let exemplar = builtin("lace").unwrap();
     let curve = Curve::circle(5.0).unwrap();
-    let mut request = SynthesisRequest::default();
+    let mut request = Settings::default();
     request.band_mm = 12.0;
+    request.variety = 0.0;
     request.closed_pattern = true;
     let synthesis = synthesize(&exemplar, &curve, &request, &Control::default()).unwrap();
     assert!(synthesis.planar.narrowest_band < 1.0);
-    assert!(synthesis.warnings.iter().any(|w| w.contains("narrowed")), "{:?}", synthesis.warnings);
+    assert!(
+        synthesis.warnings.iter().any(|w| matches!(w, tracery_core::report::Warning::BandNarrowed { .. })),
+        "{:?}",
+        synthesis.warnings
+    );
     // The output is clean: merging it again changes nothing, and it still
     // has the planned topology.
     let t = count_topology(&synthesis.planar.region);
@@ -83,11 +92,13 @@ fn loops_weld_at_their_closing_seam() {
     for name in ["lace", "vine", "tilted", "islands"] {
         let exemplar = builtin(name).unwrap();
         let curve = Curve::circle(30.0).unwrap();
-        let mut request = SynthesisRequest::default();
+        let mut request = Settings::default();
+        request.band_mm = 12.0;
+        request.variety = 0.0;
         request.closed_pattern = true;
         let s = synthesize(&exemplar, &curve, &request, &Control::default()).unwrap();
-        let again = map_along(&s.band, s.scale_mm_per_unit, &curve);
-        let t = planar_topology(&again, &curve);
+        let again = map_along(&s.band.region, s.scale_mm_per_unit, &curve);
+        let t = planar_topology(&again.region, &curve);
         assert_eq!(
             (t.components as u32, t.holes as u32, t.loop_openings),
             (s.solution.components, s.solution.holes, 1),

@@ -1,6 +1,6 @@
 //! Cutting exemplars into pieces: uniform and topology-driven slicing, thin features.
 
-use tracery_core::{
+use tracery_core::vector_brush::{
     BUILTIN_NAMES, PieceSet, SliceError, SliceOptions, SlicingMode, builtin, cut_positions, portals_at, topology_events,
 };
 

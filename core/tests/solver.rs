@@ -3,9 +3,10 @@
 use std::sync::Mutex;
 use std::sync::atomic::{AtomicBool, Ordering};
 
-use tracery_core::{
-    BUILTIN_NAMES, Control, CurveKind, Exemplar, LengthGrid, LoadOptions, PieceSet, SliceOptions, SlicingMode,
-    SolveError, SolveOptions, Target, TopologyDescriptor, Unmet, builtin, solve, tolerance_levels,
+use tracery_core::control::Control;
+use tracery_core::vector_brush::{
+    BUILTIN_NAMES, CurveKind, Exemplar, LengthGrid, LoadOptions, PieceSet, SliceOptions, SlicingMode, SolveError,
+    SolveOptions, Target, TopologyDescriptor, Unmet, builtin, solve, tolerance_levels,
 };
 
 /// The best objective over every piece sequence, by brute force, with the
@@ -214,7 +215,7 @@ fn cancellation_stops_the_search() {
     options.curve = CurveKind::Closed;
     let cancel = AtomicBool::new(true);
     let control = Control { cancel: Some(&cancel), progress: None };
-    assert_eq!(solve(&set, &options, &control).unwrap_err(), SolveError::Cancelled);
+    assert_eq!(solve(&set, &options, &control).unwrap_err(), SolveError::Cancelled(tracery_core::control::Cancelled));
     // Cancelling from the progress callback, midway, also stops it.
     let cancel = AtomicBool::new(false);
     let stop_halfway = |f: f32| {
@@ -223,7 +224,7 @@ fn cancellation_stops_the_search() {
         }
     };
     let control = Control { cancel: Some(&cancel), progress: Some(&stop_halfway) };
-    assert_eq!(solve(&set, &options, &control).unwrap_err(), SolveError::Cancelled);
+    assert_eq!(solve(&set, &options, &control).unwrap_err(), SolveError::Cancelled(tracery_core::control::Cancelled));
 }
 
 #[test]

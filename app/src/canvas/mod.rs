@@ -1,0 +1,158 @@
+//! The drawing canvas: view transforms, grid, painting and hit testing, with
+//! the tools (see `tools/`) driving what a drag does.
+
+mod grid;
+mod hit;
+mod paint;
+mod view;
+
+pub use grid::grid_ui;
+pub use hit::distance_to;
+pub use paint::{fill, polyline};
+pub use view::{MAX_POINTS_PER_MM, MIN_POINTS_PER_MM, View};
+
+use egui::{Color32, PointerButton, Sense, Stroke};
+use tracery_core::DVec2;
+
+use crate::TraceryApp;
+use crate::modes;
+use crate::tools::edit::{EditDrag, PICK_RADIUS_POINTS};
+use crate::tools::{Gesture, Tool, draw, pan};
+
+/// Wheel scroll to zoom factor: `exp(scroll * WHEEL_ZOOM)`.
+const WHEEL_ZOOM: f32 = 0.0015;
+/// Click radius for selecting a curve, in screen points.
+const SELECT_RADIUS_POINTS: f64 = 6.0;
+
+/// The selected curve's colour.
+pub const SELECTION: Color32 = Color32::from_rgb(40, 140, 255);
+
+/// The curve whose smoothed path passes within `tolerance_mm` of `p` (or
+/// within half its band), nearest first.
+pub fn curve_at(app: &TraceryApp, p: DVec2, tolerance_mm: f64) -> Option<u64> {
+    app.doc
+        .curves
+        .iter()
+        .filter_map(|c| {
+            let half = 0.5 * c.mode.band_mm();
+            let d = distance_to(app.caches.smoothed(c.id)?.points(), false, p);
+            (d <= tolerance_mm.max(half)).then_some((d, c.id))
+        })
+        .min_by(|a, b| a.0.total_cmp(&b.0))
+        .map(|(_, id)| id)
+}
+
+/// The canvas: input for the current tool, then patterns, curves and overlays.
+pub fn canvas_ui(app: &mut TraceryApp, ui: &mut egui::Ui) {
+    app.caches.refresh_smoothed(&app.doc.curves);
+    let (response, painter) = ui.allocate_painter(ui.available_size(), Sense::click_and_drag());
+    let rect = response.rect;
+    let dark = ui.visuals().dark_mode;
+    painter.rect_filled(rect, 0.0, if dark { Color32::from_gray(24) } else { Color32::from_gray(250) });
+    grid_ui(&painter, rect, &app.state.view, dark);
+
+    if response.hovered() {
+        let (scroll, zoom) = ui.input(|i| (i.smooth_scroll_delta.y, i.zoom_delta()));
+        if let Some(pointer) = response.hover_pos() {
+            let factor = zoom * (scroll * WHEEL_ZOOM).exp();
+            if factor != 1.0 {
+                app.state.view.zoom_at(rect, pointer, factor);
+            }
+        }
+    }
+    handle_gestures(app, ui, &response);
+    let view = app.state.view;
+    if response.clicked()
+        && let Some(p) = response.interact_pointer_pos().map(|p| view.from_screen(rect, p))
+    {
+        app.selected = curve_at(app, p, SELECT_RADIUS_POINTS / f64::from(view.points_per_mm));
+    }
+    paint_document(app, ui, &painter, rect);
+}
+
+fn handle_gestures(app: &mut TraceryApp, ui: &egui::Ui, response: &egui::Response) {
+    let rect = response.rect;
+    let view = app.state.view;
+    let world = |p: egui::Pos2| view.from_screen(rect, p);
+    let pointer = response.interact_pointer_pos();
+    if response.drag_started_by(PointerButton::Middle) || response.drag_started_by(PointerButton::Secondary) {
+        app.gesture = Some(Gesture::Pan(pan::Pan));
+    } else if response.drag_started_by(PointerButton::Primary)
+        // Start where the button went down, not where the drag was recognised.
+        && let Some(p) = ui.input(|i| i.pointer.press_origin()).or(pointer).map(world)
+    {
+        let tolerance_mm = PICK_RADIUS_POINTS / f64::from(view.points_per_mm);
+        app.gesture = match app.state.tool {
+            Tool::Draw => Some(Gesture::Stroke(draw::Stroke::begin(p))),
+            Tool::Pan => Some(Gesture::Pan(pan::Pan)),
+            Tool::Edit => {
+                let found =
+                    EditDrag::begin(&app.doc, app.selected, p, tolerance_mm, |q| curve_at(app, q, tolerance_mm));
+                if let Some(drag) = &found {
+                    app.selected = Some(drag.curve());
+                }
+                found.map(Gesture::Edit)
+            }
+        };
+    }
+    if response.dragged() {
+        match &mut app.gesture {
+            Some(Gesture::Pan(pan)) => pan.drag(&mut app.state.view, response.drag_delta()),
+            Some(Gesture::Stroke(stroke)) => {
+                if let Some(p) = pointer.map(world) {
+                    stroke.extend(p);
+                }
+            }
+            Some(Gesture::Edit(drag)) => {
+                if let Some(p) = pointer.map(world) {
+                    drag.drag(&mut app.doc, p);
+                }
+            }
+            None => {}
+        }
+    }
+    if response.drag_stopped() {
+        if let Some(Gesture::Stroke(stroke)) = app.gesture.take()
+            && let Some((points, closed)) = stroke.finish(view.points_per_mm)
+        {
+            app.add_curve(points, closed);
+        }
+        app.gesture = None;
+    }
+}
+
+fn paint_document(app: &TraceryApp, ui: &egui::Ui, painter: &egui::Painter, rect: egui::Rect) {
+    let view = app.state.view;
+    let dark = ui.visuals().dark_mode;
+    let ink = if dark { Color32::from_rgb(230, 200, 140) } else { Color32::from_rgb(40, 40, 48) };
+    let toggles = modes::OverlayToggles { band: app.state.show_band, seams: app.state.show_seams };
+    for item in &app.doc.curves {
+        let selected = app.selected == Some(item.id);
+        if let Some(product) = app.worker.output(item.id) {
+            let stale = app.worker.is_stale(item.id);
+            let color = if stale { ink.gamma_multiply(0.45) } else { ink };
+            painter.add(fill(&view, rect, &product.fill_mm, color));
+            modes::mode_ui(&item.mode).overlays_ui(painter, &view, rect, product, toggles);
+        }
+        if let Some(curve) = app.caches.smoothed(item.id) {
+            let color = if selected { SELECTION } else { SELECTION.gamma_multiply(0.43) };
+            let width = if selected { 2.0 } else { 1.0 };
+            painter.add(polyline(&view, rect, curve.points(), false, Stroke::new(width, color)));
+        }
+        if selected && app.state.tool == Tool::Edit {
+            for p in item.control_points() {
+                painter.circle(view.to_screen(rect, p), 4.0, Color32::WHITE, Stroke::new(1.5, SELECTION));
+            }
+        }
+    }
+    if let Some(Gesture::Stroke(stroke)) = &app.gesture {
+        painter.add(polyline(&view, rect, &stroke.points, false, Stroke::new(2.0, SELECTION)));
+    }
+    painter.text(
+        rect.right_bottom() + egui::vec2(-8.0, -8.0),
+        egui::Align2::RIGHT_BOTTOM,
+        format!("{:.1} px/mm", view.points_per_mm),
+        egui::FontId::proportional(11.0),
+        ui.visuals().weak_text_color(),
+    );
+}

@@ -1,0 +1,60 @@
+//! The `tracery` command line: one subcommand per mode, sharing `--along`,
+//! the outputs and `--report`. An error exits non-zero with one line on
+//! stderr and leaves no partial file.
+
+mod output;
+mod synth;
+
+use anyhow::{Context, Result};
+use clap::{Parser, Subcommand};
+use tracery_core::vector_brush::{BUILTIN_NAMES, PieceSet, SliceOptions, builtin};
+
+pub use output::{OutputArgs, Report};
+pub use synth::SynthArgs;
+
+/// Tracery: synthesize printable patterns. Without a command, opens the app.
+#[derive(Parser, Debug)]
+#[command(name = "tracery", version, about, allow_negative_numbers = true)]
+pub struct Cli {
+    #[command(subcommand)]
+    command: Option<Command>,
+}
+
+impl Cli {
+    /// Whether the command line asks for the app window rather than a command.
+    pub fn wants_app(&self) -> bool {
+        self.command.is_none()
+    }
+}
+
+#[derive(Subcommand, Debug)]
+enum Command {
+    /// Print the built-in exemplars.
+    List,
+    /// Vector brush: synthesize a pattern along a curve and write STL, SVG and a report.
+    Synth(Box<SynthArgs>),
+}
+
+fn list() -> Result<()> {
+    for name in BUILTIN_NAMES {
+        let exemplar = builtin(name).with_context(|| format!("loading built-in exemplar '{name}'"))?;
+        let pieces = PieceSet::new(&exemplar, &SliceOptions::default())
+            .with_context(|| format!("cutting built-in exemplar '{name}'"))?;
+        println!(
+            "{name:10} {:3} component(s) {:3} hole(s) {:3} pieces",
+            exemplar.region.component_count(),
+            exemplar.region.hole_count(),
+            pieces.len()
+        );
+    }
+    Ok(())
+}
+
+/// Runs the command line.
+pub fn run(cli: Cli) -> Result<()> {
+    match cli.command {
+        Some(Command::List) => list(),
+        Some(Command::Synth(args)) => synth::run(*args),
+        None => Ok(()),
+    }
+}

@@ -1,0 +1,108 @@
+//! What every subcommand shares: where the pattern goes, the output files,
+//! and the JSON report, all made from the mode's [`Product`].
+
+use std::path::PathBuf;
+
+use anyhow::{Result, bail};
+use serde::Serialize;
+use tracery_core::Product;
+use tracery_core::export::{region_to_svg, write_stl};
+use tracery_core::product::Facts;
+use tracery_core::report::{Timings, Warning};
+
+use crate::files::write_atomically;
+
+/// The flags every subcommand takes.
+#[derive(clap::Args, Debug, Clone, PartialEq)]
+pub struct OutputArgs {
+    /// Where the pattern goes: line:LENGTH_MM, circle:RADIUS_MM, wave:LENGTH_MM, rect:W_MMxH_MM or svg:FILE.svg.
+    #[arg(long)]
+    pub along: String,
+    /// Binary STL output (millimetres).
+    #[arg(long)]
+    pub stl: Option<PathBuf>,
+    /// SVG output (millimetres).
+    #[arg(long)]
+    pub svg: Option<PathBuf>,
+    /// JSON report output: topology, `timings_ms`, `warnings` and the mode's figures.
+    #[arg(long)]
+    pub report: Option<PathBuf>,
+}
+
+/// What `--report` writes.
+#[derive(Serialize)]
+pub struct Report<'a> {
+    /// The subcommand.
+    pub mode: &'static str,
+    /// The exemplar (or swatch) used.
+    pub exemplar: String,
+    /// `--along` as given.
+    pub curve: String,
+    /// Components counted on the final geometry.
+    pub components: usize,
+    /// Holes counted on the final geometry (loop openings apart).
+    pub holes: usize,
+    /// Central openings of a loop.
+    pub loop_openings: usize,
+    /// The mode's own figures.
+    #[serde(flatten)]
+    pub facts: &'a Facts,
+    /// Triangles in the STL.
+    pub stl_triangles: usize,
+    /// Shells in the STL.
+    pub stl_shells: usize,
+    /// Milliseconds per stage.
+    pub timings_ms: &'a Timings,
+    /// What the person should know.
+    pub warnings: &'a [Warning],
+}
+
+/// Writes the outputs asked for and prints a summary. Every file is made in
+/// memory first, so that an error leaves none behind.
+pub fn write_outputs(mode: &'static str, exemplar: &str, args: &OutputArgs, product: &Product) -> Result<()> {
+    let mut stl = Vec::new();
+    let (mut triangles, mut shells) = (0, 0);
+    if let Some(mesh) = &product.mesh_mm {
+        write_stl(mesh, &mut stl)?;
+        (triangles, shells) = (mesh.triangles.len(), mesh.shell_count());
+    } else if args.stl.is_some() {
+        bail!("this mode makes no solid to write as STL");
+    }
+    let svg = region_to_svg(&product.region_mm);
+    let report = Report {
+        mode,
+        exemplar: exemplar.to_string(),
+        curve: args.along.clone(),
+        components: product.topology.components,
+        holes: product.topology.holes,
+        loop_openings: product.topology.loop_openings,
+        facts: &product.facts,
+        stl_triangles: triangles,
+        stl_shells: shells,
+        timings_ms: &product.timings,
+        warnings: &product.warnings,
+    };
+    let json = serde_json::to_string_pretty(&report)?;
+    if let Some(path) = &args.stl {
+        write_atomically(path, &stl)?;
+    }
+    if let Some(path) = &args.svg {
+        write_atomically(path, svg.as_bytes())?;
+    }
+    if let Some(path) = &args.report {
+        write_atomically(path, json.as_bytes())?;
+    }
+    let t = &product.topology;
+    let openings = if t.loop_openings > 0 { format!(" (+{} loop opening)", t.loop_openings) } else { String::new() };
+    let pieces = product.facts.count("pieces").map_or(String::new(), |n| format!(", {n} pieces"));
+    println!(
+        "{exemplar}: {} component(s), {} hole(s){openings}{pieces}; {:.0} ms",
+        t.components,
+        t.holes,
+        product.timings.total_ms()
+    );
+    for w in &product.warnings {
+        println!("warning: {w}");
+    }
+    Ok(())
+}

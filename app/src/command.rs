@@ -1,0 +1,135 @@
+//! Every command a person can give, with its label and shortcuts. Buttons,
+//! menus and keys all go through [`Command`], and `command_handling` runs them.
+
+use egui::{Key, KeyboardShortcut, Modifiers};
+
+const fn cmd(key: Key) -> KeyboardShortcut {
+    KeyboardShortcut::new(Modifiers::COMMAND, key)
+}
+const fn plain(key: Key) -> KeyboardShortcut {
+    KeyboardShortcut::new(Modifiers::NONE, key)
+}
+const COMMAND_SHIFT: Modifiers = Modifiers { shift: true, ..Modifiers::COMMAND };
+const UNDO: &[KeyboardShortcut] = &[cmd(Key::Z)];
+const REDO: &[KeyboardShortcut] = &[KeyboardShortcut::new(COMMAND_SHIFT, Key::Z), cmd(Key::Y)];
+const OPEN: &[KeyboardShortcut] = &[cmd(Key::O)];
+const SAVE: &[KeyboardShortcut] = &[cmd(Key::S)];
+const EXPORT_STL: &[KeyboardShortcut] = &[cmd(Key::E)];
+const DELETE: &[KeyboardShortcut] = &[plain(Key::Delete), plain(Key::Backspace)];
+const DESELECT: &[KeyboardShortcut] = &[plain(Key::Escape)];
+
+/// A command.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum Command {
+    /// Undo the last change.
+    Undo,
+    /// Redo what was undone.
+    Redo,
+    /// Open a project.
+    Open,
+    /// Save the project (asks where the first time).
+    Save,
+    /// Save the project under a new name.
+    SaveAs,
+    /// Import an SVG exemplar.
+    ImportSvg,
+    /// Export STL through a file dialog.
+    ExportStl,
+    /// Export SVG through a file dialog.
+    ExportSvg,
+    /// Export STL and SVG into the export folder, without a dialog.
+    QuickExport,
+    /// Delete the selected curve.
+    Delete,
+    /// Select nothing (the controls then edit the settings for new curves).
+    Deselect,
+    /// Another pattern for the selected curve (a new seed).
+    AnotherOne,
+}
+
+impl Command {
+    /// Every command, in menu order.
+    pub const ALL: [Command; 12] = [
+        Command::Undo,
+        Command::Redo,
+        Command::Open,
+        Command::Save,
+        Command::SaveAs,
+        Command::ImportSvg,
+        Command::ExportStl,
+        Command::ExportSvg,
+        Command::QuickExport,
+        Command::Delete,
+        Command::Deselect,
+        Command::AnotherOne,
+    ];
+
+    /// The words on its button.
+    pub fn label(self) -> &'static str {
+        match self {
+            Command::Undo => "Undo",
+            Command::Redo => "Redo",
+            Command::Open => "Open…",
+            Command::Save => "Save",
+            Command::SaveAs => "Save…",
+            Command::ImportSvg => "Import SVG…",
+            Command::ExportStl => "Export STL…",
+            Command::ExportSvg => "Export SVG…",
+            Command::QuickExport => "Quick export",
+            Command::Delete => "Delete",
+            Command::Deselect => "Deselect",
+            Command::AnotherOne => "Another one",
+        }
+    }
+
+    /// Its keyboard shortcuts; the first is shown in tooltips.
+    pub fn shortcuts(self) -> &'static [KeyboardShortcut] {
+        match self {
+            Command::Undo => UNDO,
+            Command::Redo => REDO,
+            Command::Open => OPEN,
+            Command::Save => SAVE,
+            Command::ExportStl => EXPORT_STL,
+            Command::Delete => DELETE,
+            Command::Deselect => DESELECT,
+            Command::SaveAs | Command::ImportSvg | Command::ExportSvg | Command::QuickExport | Command::AnotherOne => {
+                &[]
+            }
+        }
+    }
+
+    /// Whether its shortcuts are plain keys, which must not fire while a
+    /// text field has the keyboard.
+    fn plain_keys(self) -> bool {
+        self.shortcuts().iter().all(|s| s.modifiers.is_none())
+    }
+
+    /// The commands whose shortcut was pressed this frame (consumed).
+    pub fn pressed(ctx: &egui::Context) -> Vec<Command> {
+        let typing = ctx.egui_wants_keyboard_input();
+        let mut out = Vec::new();
+        // Longer shortcuts first, so Ctrl+Shift+Z is not read as Ctrl+Z.
+        let mut all: Vec<(Command, KeyboardShortcut)> =
+            Command::ALL.iter().flat_map(|&c| c.shortcuts().iter().map(move |s| (c, *s))).collect();
+        all.sort_by_key(|(_, s)| std::cmp::Reverse(s.modifiers.shift as u8 + s.modifiers.command as u8));
+        for (command, shortcut) in all {
+            if command.plain_keys() && typing {
+                continue;
+            }
+            if ctx.input_mut(|i| i.consume_shortcut(&shortcut)) && !out.contains(&command) {
+                out.push(command);
+            }
+        }
+        out
+    }
+
+    /// A button for the command, with its shortcut in the tooltip; true when clicked.
+    pub fn button(self, ui: &mut egui::Ui, enabled: bool) -> bool {
+        let response = ui.add_enabled(enabled, egui::Button::new(self.label()));
+        let response = match self.shortcuts().first() {
+            Some(s) => response.on_hover_text(ui.ctx().format_shortcut(s)),
+            None => response,
+        };
+        response.clicked()
+    }
+}

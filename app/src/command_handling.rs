@@ -1,0 +1,249 @@
+//! Running commands: open, save, import, export, undo and the rest, and the
+//! autosave. Every button, menu entry and shortcut ends up in [`run`].
+
+use std::path::Path;
+use std::time::Instant;
+
+use tracery_core::export::{region_to_svg, write_stl};
+use tracery_core::geom::Region;
+use tracery_core::mesh::Mesh;
+
+use crate::TraceryApp;
+use crate::command::Command;
+use crate::dialogs::FileKind;
+use crate::document::{Document, ModeSettings};
+use crate::files::write_atomically;
+use crate::modes::vector_brush::next_seed;
+use crate::worker::JobState;
+
+/// Runs `command` on the app.
+pub fn run(app: &mut TraceryApp, command: Command) {
+    match command {
+        Command::Undo => {
+            if app.history.undo(&mut app.doc) {
+                app.after_document_swap();
+            }
+        }
+        Command::Redo => {
+            if app.history.redo(&mut app.doc) {
+                app.after_document_swap();
+            }
+        }
+        Command::Open => {
+            if let Some(p) = app.dialogs.pick(FileKind::OpenProject) {
+                app.open_project(&p);
+            }
+        }
+        Command::Save => app.save_project(false),
+        Command::SaveAs => app.save_project(true),
+        Command::ImportSvg => {
+            if let Some(p) = app.dialogs.pick(FileKind::ImportSvg) {
+                app.import_svg(&p);
+            }
+        }
+        Command::ExportStl => match app.dialogs.pick(FileKind::ExportStl) {
+            Some(p) => app.export_stl_to(&p),
+            None => app.message = Some(("No file chosen; Quick export writes without a dialog".into(), false)),
+        },
+        Command::ExportSvg => {
+            if let Some(p) = app.dialogs.pick(FileKind::ExportSvg) {
+                app.export_svg_to(&p);
+            }
+        }
+        Command::QuickExport => app.quick_export(),
+        Command::Delete => app.delete_selected(),
+        Command::Deselect => app.selected = None,
+        Command::AnotherOne => match app.settings_mut() {
+            ModeSettings::VectorBrush(v) => v.settings.seed = next_seed(v.settings.seed),
+        },
+    }
+}
+
+impl TraceryApp {
+    fn after_document_swap(&mut self) {
+        self.history_handled = true;
+        if self.selected.is_some_and(|id| self.doc.curve(id).is_none()) {
+            self.selected = None;
+        }
+        self.caches.forget_imported();
+    }
+
+    fn delete_selected(&mut self) {
+        if let Some(id) = self.selected.take() {
+            self.history.record(self.doc.clone());
+            self.doc.curves.retain(|c| c.id != id);
+            self.history_handled = true;
+        }
+    }
+
+    /// Imports an SVG exemplar from `path`; on failure the document is left as it was.
+    pub fn import_svg(&mut self, path: &Path) {
+        let name = path.file_name().map_or_else(|| "exemplar.svg".into(), |n| n.to_string_lossy().into_owned());
+        let text = match std::fs::read(path) {
+            Ok(bytes) => String::from_utf8_lossy(&bytes).into_owned(),
+            Err(e) => {
+                self.message = Some((format!("Could not read {}: {e}", path.display()), true));
+                return;
+            }
+        };
+        let before = self.doc.clone();
+        match self.doc.import(&name, &text) {
+            Ok(r) => {
+                self.history.record(before);
+                self.history_handled = true;
+                match self.settings_mut() {
+                    ModeSettings::VectorBrush(v) => v.exemplar = r.clone(),
+                }
+                self.message = Some((format!("Imported '{}'", r.name()), false));
+            }
+            Err(e) => self.message = Some((format!("Could not import: {e}"), true)),
+        }
+    }
+
+    /// Opens a project (any format version this one reads).
+    pub fn open_project(&mut self, path: &Path) {
+        let read = std::fs::read_to_string(path).map_err(|e| e.to_string());
+        match read.and_then(|t| Document::from_ron(&t).map_err(|e| e.to_string())) {
+            Ok(doc) => {
+                self.history.record(self.doc.clone());
+                self.doc = doc;
+                self.selected = None;
+                self.after_document_swap();
+                self.state.project_path = Some(path.to_path_buf());
+                self.message = Some((format!("Opened {}", path.display()), false));
+            }
+            Err(e) => self.message = Some((format!("Could not open {}: {e}", path.display()), true)),
+        }
+    }
+
+    fn save_project(&mut self, choose: bool) {
+        let path = match (&self.state.project_path, choose) {
+            (Some(p), false) => Some(p.clone()),
+            _ => self.dialogs.pick(FileKind::SaveProject),
+        };
+        let Some(path) = path else { return };
+        let result = self.doc.to_ron().map_err(anyhow::Error::from).and_then(|t| write_atomically(&path, t.as_bytes()));
+        self.message = Some(match result {
+            Ok(()) => {
+                self.state.project_path = Some(path.clone());
+                (format!("Saved {}", path.display()), false)
+            }
+            Err(e) => (format!("{e:#}"), true),
+        });
+    }
+
+    fn export_ids(&self) -> Vec<u64> {
+        match (self.state.export_selected_only, self.selected) {
+            (true, Some(id)) => vec![id],
+            _ => self.doc.curves.iter().map(|c| c.id).collect(),
+        }
+    }
+
+    /// The finished products of the curves to export, or why they cannot be.
+    fn export_products(&self) -> Result<Vec<&tracery_core::Product>, String> {
+        let ids = self.export_ids();
+        if ids.is_empty() {
+            return Err("Nothing to export: draw a curve first".into());
+        }
+        ids.iter()
+            .map(|id| match (self.worker.is_stale(*id), self.worker.state(*id)) {
+                (false, Some(JobState::Done(Ok(product)))) => Ok(product.as_ref()),
+                (true, _) => Err("A pattern is still being synthesized; export when the status bar says done".into()),
+                _ => Err("A curve has no pattern (see the status bar); fix or delete it before exporting".into()),
+            })
+            .collect()
+    }
+
+    /// Writes the STL of the exported curves (all, or the selected one) to `path`.
+    pub fn export_stl_to(&mut self, path: &Path) {
+        let result = self.export_products().and_then(|products| {
+            let mut all = Mesh::default();
+            for mesh in products.iter().filter_map(|p| p.mesh_mm.as_ref()) {
+                all.append(mesh);
+            }
+            let mut bytes = Vec::new();
+            write_stl(&all, &mut bytes).map_err(|e| e.to_string())?;
+            write_atomically(path, &bytes).map_err(|e| format!("{e:#}"))?;
+            Ok(all.triangles.len())
+        });
+        self.message = Some(match result {
+            Ok(n) => (format!("Exported {n} triangles to {}", path.display()), false),
+            Err(e) => (e, true),
+        });
+    }
+
+    /// Writes the SVG of the exported curves to `path`.
+    pub fn export_svg_to(&mut self, path: &Path) {
+        let result = self.export_products().and_then(|products| {
+            let mut region = Region::default();
+            for p in products {
+                region.polygons.extend(p.region_mm.polygons.iter().cloned());
+            }
+            write_atomically(path, region_to_svg(&region).as_bytes()).map_err(|e| format!("{e:#}"))
+        });
+        self.message = Some(match result {
+            Ok(()) => (format!("Exported {}", path.display()), false),
+            Err(e) => (e, true),
+        });
+    }
+
+    /// Writes STL and SVG into the export folder under a new name.
+    pub fn quick_export(&mut self) {
+        let folder = self.state.export_folder.clone();
+        if let Err(e) = std::fs::create_dir_all(&folder) {
+            self.message = Some((format!("Could not create {}: {e}", folder.display()), true));
+            return;
+        }
+        let stamp = std::time::SystemTime::now().duration_since(std::time::UNIX_EPOCH).map_or(0, |d| d.as_secs());
+        let stl = folder.join(format!("tracery-{stamp}.stl"));
+        self.export_stl_to(&stl);
+        if matches!(self.message, Some((_, false))) {
+            self.export_svg_to(&folder.join(format!("tracery-{stamp}.svg")));
+            self.message = Some((format!("Exported {} and .svg", stl.display()), false));
+        }
+    }
+
+    /// Files dropped on the window: projects open, anything else imports as an exemplar.
+    pub(crate) fn dropped_files(&mut self, ctx: &egui::Context) {
+        let dropped = ctx.input(|i| i.raw.dropped_files.clone());
+        for file in dropped {
+            let path = file.path().to_path_buf();
+            match path.extension().and_then(|e| e.to_str()).map(str::to_ascii_lowercase).as_deref() {
+                Some("ron") => self.open_project(&path),
+                _ => self.import_svg(&path),
+            }
+        }
+    }
+
+    /// Restores the last session's document, if it had curves.
+    pub(crate) fn restore_autosave(&mut self) {
+        let Some(path) = &self.autosave.path else { return };
+        let Ok(text) = std::fs::read_to_string(path) else { return };
+        match Document::from_ron(&text) {
+            Ok(doc) if !doc.curves.is_empty() => {
+                self.message = Some((format!("Restored your last session ({} curves)", doc.curves.len()), false));
+                self.autosave.saved = doc.clone();
+                self.doc = doc;
+            }
+            Ok(_) => {}
+            Err(e) => self.message = Some((format!("Could not restore the last session: {e}"), true)),
+        }
+    }
+
+    /// Writes the autosave when the document changed and enough time passed.
+    pub(crate) fn autosave_now(&mut self) {
+        if !self.autosave_due() {
+            return;
+        }
+        let Some(path) = self.autosave.path.clone() else { return };
+        self.autosave.last = Instant::now();
+        if let Some(dir) = path.parent() {
+            let _ = std::fs::create_dir_all(dir);
+        }
+        if let Ok(text) = self.doc.to_ron()
+            && write_atomically(&path, text.as_bytes()).is_ok()
+        {
+            self.autosave.saved = self.doc.clone();
+        }
+    }
+}

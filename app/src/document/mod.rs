@@ -1,0 +1,246 @@
+//! The document a person edits: curves, each with its mode's settings, and
+//! imported exemplars. Saved as `.ron` with a `format_version`; imported
+//! exemplars are embedded so a project opens anywhere. Files written before
+//! versioning (format 0) are read by [`legacy`] and converted.
+
+mod history;
+pub mod legacy;
+
+pub use history::History;
+
+use serde::{Deserialize, Serialize};
+use tracery_core::DVec2;
+use tracery_core::curve::Curve;
+use tracery_core::vector_brush::{self, Exemplar, LoadOptions, builtin};
+
+/// The format this version writes. Older formats are converted on opening.
+pub const FORMAT_VERSION: u32 = 1;
+
+/// How far apart the smoothed curve's samples are, mm.
+pub const SMOOTHING_SPACING_MM: f64 = 0.5;
+
+/// Which exemplar a curve uses.
+#[derive(Clone, Debug, PartialEq, Eq, Hash, Serialize, Deserialize)]
+pub enum ExemplarRef {
+    /// A built-in exemplar, by name.
+    Builtin(String),
+    /// An imported exemplar, by its name in [`Document::imported`].
+    Imported(String),
+}
+
+impl ExemplarRef {
+    /// The name shown to people.
+    pub fn name(&self) -> &str {
+        match self {
+            ExemplarRef::Builtin(n) | ExemplarRef::Imported(n) => n,
+        }
+    }
+}
+
+impl Default for ExemplarRef {
+    fn default() -> Self {
+        ExemplarRef::Builtin("lace".into())
+    }
+}
+
+/// A vector-brush curve's choices: its exemplar and the mode's settings.
+#[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize)]
+#[serde(default)]
+pub struct VectorBrushItem {
+    /// The exemplar.
+    pub exemplar: ExemplarRef,
+    /// The settings, the same struct the command line uses.
+    pub settings: vector_brush::Settings,
+}
+
+/// Which mode makes a curve's pattern, with that mode's settings.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[non_exhaustive]
+pub enum ModeSettings {
+    /// Topology-constrained vector patterns along the curve.
+    VectorBrush(VectorBrushItem),
+}
+
+impl Default for ModeSettings {
+    fn default() -> Self {
+        ModeSettings::VectorBrush(VectorBrushItem::default())
+    }
+}
+
+impl ModeSettings {
+    /// The band's height across the curve, mm (for hit testing and overlays).
+    pub fn band_mm(&self) -> f64 {
+        match self {
+            ModeSettings::VectorBrush(v) => v.settings.band_mm,
+        }
+    }
+
+    /// A copy for a newly drawn curve: the same choices, the best pattern.
+    pub fn for_new_curve(&self) -> ModeSettings {
+        let mut out = self.clone();
+        match &mut out {
+            ModeSettings::VectorBrush(v) => v.settings.seed = 0,
+        }
+        out
+    }
+}
+
+/// One curve and its pattern settings.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct CurveItem {
+    /// Stable id (for results and selection).
+    pub id: u64,
+    /// Control points in mm, `y` up; the curve is smoothed through them.
+    pub points: Vec<[f64; 2]>,
+    /// Whether the curve is a loop.
+    pub closed: bool,
+    /// The mode and its settings.
+    pub mode: ModeSettings,
+}
+
+impl CurveItem {
+    /// The control points as vectors.
+    pub fn control_points(&self) -> Vec<DVec2> {
+        self.points.iter().map(|p| DVec2::new(p[0], p[1])).collect()
+    }
+
+    /// The smooth curve through the control points.
+    pub fn curve(&self) -> Option<Curve> {
+        Curve::from_stroke(&self.control_points(), self.closed, SMOOTHING_SPACING_MM).ok()
+    }
+}
+
+/// An exemplar imported from SVG, embedded in the document.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct ImportedExemplar {
+    /// Name (from the file name), unique in the document.
+    pub name: String,
+    /// The SVG source.
+    pub svg: String,
+}
+
+/// Why a document could not be read, or an exemplar found.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+pub enum DocumentError {
+    /// The text is not a project.
+    #[error("not a Tracery project: {0}")]
+    NotAProject(String),
+    /// A newer Tracery wrote it.
+    #[error("this project was written by a newer Tracery (format {found}; this one reads up to {FORMAT_VERSION})")]
+    TooNew {
+        /// The version found.
+        found: u32,
+    },
+    /// The project could not be written out.
+    #[error("could not write the project: {0}")]
+    Write(String),
+    /// A curve refers to an imported exemplar that is not in the document.
+    #[error("the imported exemplar '{0}' is missing")]
+    MissingExemplar(String),
+    /// An exemplar did not load.
+    #[error("{0}")]
+    Exemplar(String),
+}
+
+/// A Tracery project.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(default)]
+pub struct Document {
+    /// The format this document is in ([`FORMAT_VERSION`] once loaded).
+    pub format_version: u32,
+    /// Curves, in drawing order.
+    pub curves: Vec<CurveItem>,
+    /// Imported exemplars.
+    pub imported: Vec<ImportedExemplar>,
+    /// The next curve id.
+    pub next_id: u64,
+}
+
+impl Default for Document {
+    fn default() -> Self {
+        Document { format_version: FORMAT_VERSION, curves: Vec::new(), imported: Vec::new(), next_id: 0 }
+    }
+}
+
+/// Only the version, to decide how to read the rest.
+#[derive(Deserialize)]
+struct VersionProbe {
+    /// Absent before versioning: format 0.
+    #[serde(default)]
+    format_version: u32,
+}
+
+impl Document {
+    /// Adds a curve and returns its id.
+    pub fn add_curve(&mut self, points: Vec<DVec2>, closed: bool, mode: ModeSettings) -> u64 {
+        let id = self.next_id;
+        self.next_id += 1;
+        self.curves.push(CurveItem { id, points: points.iter().map(|p| [p.x, p.y]).collect(), closed, mode });
+        id
+    }
+
+    /// The curve with `id`.
+    pub fn curve(&self, id: u64) -> Option<&CurveItem> {
+        self.curves.iter().find(|c| c.id == id)
+    }
+
+    /// The curve with `id`, mutable.
+    pub fn curve_mut(&mut self, id: u64) -> Option<&mut CurveItem> {
+        self.curves.iter_mut().find(|c| c.id == id)
+    }
+
+    /// Loads the exemplar a curve refers to.
+    pub fn exemplar(&self, r: &ExemplarRef) -> Result<Exemplar, DocumentError> {
+        match r {
+            ExemplarRef::Builtin(name) => builtin(name).map_err(|e| DocumentError::Exemplar(e.to_string())),
+            ExemplarRef::Imported(name) => {
+                let imported = self
+                    .imported
+                    .iter()
+                    .find(|e| &e.name == name)
+                    .ok_or_else(|| DocumentError::MissingExemplar(name.clone()))?;
+                Exemplar::from_svg_str(name.clone(), &imported.svg, &LoadOptions::default())
+                    .map_err(|e| DocumentError::Exemplar(e.to_string()))
+            }
+        }
+    }
+
+    /// Imports an SVG exemplar, checking it loads; returns its reference.
+    pub fn import(&mut self, file_name: &str, svg: &str) -> Result<ExemplarRef, DocumentError> {
+        let base = std::path::Path::new(file_name)
+            .file_stem()
+            .map_or_else(|| "imported".to_string(), |s| s.to_string_lossy().into_owned());
+        Exemplar::from_svg_str(base.clone(), svg, &LoadOptions::default())
+            .map_err(|e| DocumentError::Exemplar(format!("{file_name}: {e}")))?;
+        let mut name = base.clone();
+        let mut k = 2;
+        while self.imported.iter().any(|e| e.name == name) || vector_brush::BUILTIN_NAMES.contains(&name.as_str()) {
+            name = format!("{base} {k}");
+            k += 1;
+        }
+        self.imported.push(ImportedExemplar { name: name.clone(), svg: svg.to_string() });
+        Ok(ExemplarRef::Imported(name))
+    }
+
+    /// The document as `.ron` text, in the current format.
+    pub fn to_ron(&self) -> Result<String, DocumentError> {
+        let current = Document { format_version: FORMAT_VERSION, ..self.clone() };
+        ron::ser::to_string_pretty(&current, ron::ser::PrettyConfig::default())
+            .map_err(|e| DocumentError::Write(e.to_string()))
+    }
+
+    /// A document from `.ron` text of any format this version knows.
+    pub fn from_ron(text: &str) -> Result<Document, DocumentError> {
+        let not_a_project = |e: ron::error::SpannedError| DocumentError::NotAProject(e.to_string());
+        let probe: VersionProbe = ron::from_str(text).map_err(not_a_project)?;
+        match probe.format_version {
+            0 => Ok(ron::from_str::<legacy::DocumentV0>(text).map_err(not_a_project)?.into()),
+            found if found > FORMAT_VERSION => Err(DocumentError::TooNew { found }),
+            _ => {
+                let mut doc: Document = ron::from_str(text).map_err(not_a_project)?;
+                doc.format_version = FORMAT_VERSION;
+                Ok(doc)
+            }
+        }
+    }
+}

@@ -1,0 +1,134 @@
+//! Modes as the app shows them: a [`ModeUi`] per mode (its name, its
+//! settings UI, its overlays and the job it hands the worker), and the
+//! registry of them. Each mode lives in its own file and knows no other.
+
+pub mod vector_brush;
+
+use std::sync::Arc;
+
+use egui::{Color32, Stroke};
+use tracery_core::Product;
+use tracery_core::control::{Control, MaybeCancelled};
+use tracery_core::curve::Curve;
+
+use crate::canvas::{View, polyline};
+use crate::command::Command;
+use crate::document::{Document, DocumentError, ModeSettings};
+use crate::state::Caches;
+use crate::worker::Job;
+
+/// Which overlays the person wants drawn.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct OverlayToggles {
+    /// The band's edges.
+    pub band: bool,
+    /// Seams between pieces.
+    pub seams: bool,
+}
+
+/// What a mode's settings UI may use besides the settings it edits.
+pub struct ModeEnv<'a> {
+    /// The document (imported exemplars, for pickers).
+    pub doc: &'a Document,
+    /// Loaded exemplars and their pictures.
+    pub caches: &'a mut Caches,
+    /// Commands to run once the frame's layout is done (an import, say).
+    pub commands: &'a mut Vec<Command>,
+}
+
+/// A mode as the app shows it.
+pub trait ModeUi: Sync {
+    /// Its name in the mode picker.
+    fn name(&self) -> &'static str;
+
+    /// The settings a new curve of this mode starts with.
+    fn default_settings(&self) -> ModeSettings;
+
+    /// Whether `settings` belong to this mode.
+    fn owns(&self, settings: &ModeSettings) -> bool;
+
+    /// The controls for `settings`.
+    fn settings_ui(&self, ui: &mut egui::Ui, settings: &mut ModeSettings, env: &mut ModeEnv<'_>);
+
+    /// Drawn over a result on the canvas; by default the product's band
+    /// edges and seams.
+    fn overlays_ui(
+        &self,
+        painter: &egui::Painter,
+        view: &View,
+        rect: egui::Rect,
+        product: &Product,
+        toggles: OverlayToggles,
+    ) {
+        if toggles.band {
+            for edge in &product.overlays.band_edges_mm {
+                let stroke = Stroke::new(1.0, Color32::from_rgba_unmultiplied(90, 140, 230, 120));
+                painter.add(polyline(view, rect, edge, false, stroke));
+            }
+        }
+        if toggles.seams {
+            for s in &product.overlays.seams_mm {
+                painter.line_segment(
+                    [view.to_screen(rect, s[0]), view.to_screen(rect, s[1])],
+                    Stroke::new(1.0, Color32::from_rgb(230, 70, 70)),
+                );
+            }
+        }
+    }
+
+    /// The job that computes a curve's pattern.
+    fn job(
+        &self,
+        curve: &Curve,
+        settings: &ModeSettings,
+        doc: &Document,
+        caches: &mut Caches,
+    ) -> Result<ModeJob, DocumentError>;
+}
+
+/// Every mode, in picker order.
+pub static REGISTRY: &[&dyn ModeUi] = &[&vector_brush::VectorBrushUi];
+
+/// The mode that owns `settings`.
+pub fn mode_ui(settings: &ModeSettings) -> &'static dyn ModeUi {
+    REGISTRY.iter().copied().find(|m| m.owns(settings)).unwrap_or(REGISTRY[0])
+}
+
+/// A job of any mode, as the worker runs it.
+#[derive(Clone, Debug, PartialEq)]
+#[non_exhaustive]
+pub enum ModeJob {
+    /// The vector brush along a curve.
+    VectorBrush(vector_brush::VectorBrushJob),
+}
+
+/// Why a job failed.
+#[derive(Debug, thiserror::Error)]
+#[non_exhaustive]
+pub enum JobError {
+    /// The vector brush failed.
+    #[error(transparent)]
+    VectorBrush(#[from] tracery_core::vector_brush::SynthesisError),
+}
+
+impl MaybeCancelled for JobError {
+    fn is_cancelled(&self) -> bool {
+        match self {
+            JobError::VectorBrush(e) => e.is_cancelled(),
+        }
+    }
+}
+
+impl Job for ModeJob {
+    type Output = Product;
+    type Error = JobError;
+
+    fn run(&self, control: &Control) -> Result<Product, JobError> {
+        match self {
+            ModeJob::VectorBrush(job) => Ok(job.run(control)?),
+        }
+    }
+}
+
+/// The product of each curve, as the app keeps them.
+pub type Output = Arc<Product>;

@@ -1,0 +1,135 @@
+//! The vector brush in the app: exemplar picker, pattern controls, and its job.
+
+use std::sync::Arc;
+
+use egui::RichText;
+use tracery_core::Product;
+use tracery_core::control::Control;
+use tracery_core::curve::{Along, Curve};
+use tracery_core::vector_brush::{Exemplar, Settings, SlicingMode, SynthesisError, Target, make_product};
+
+use super::{ModeEnv, ModeJob, ModeUi};
+use crate::command::Command;
+use crate::document::{Document, DocumentError, ModeSettings, VectorBrushItem};
+use crate::panels::exemplar_picker::exemplar_picker_ui;
+use crate::state::Caches;
+
+/// Cut lines offered when switching to uniform slicing.
+const DEFAULT_UNIFORM_CUTS: usize = 8;
+
+/// The vector brush's [`ModeUi`].
+pub struct VectorBrushUi;
+
+/// A vector-brush synthesis along one curve.
+#[derive(Clone, Debug)]
+pub struct VectorBrushJob {
+    /// The smoothed curve, mm.
+    pub curve: Curve,
+    /// The exemplar.
+    pub exemplar: Arc<Exemplar>,
+    /// The settings.
+    pub settings: Settings,
+}
+
+impl PartialEq for VectorBrushJob {
+    fn eq(&self, other: &Self) -> bool {
+        // Exemplars are immutable once loaded: the same pointer is the same exemplar.
+        self.curve == other.curve
+            && self.settings == other.settings
+            && (Arc::ptr_eq(&self.exemplar, &other.exemplar) || self.exemplar == other.exemplar)
+    }
+}
+
+impl VectorBrushJob {
+    /// Runs the vector brush.
+    pub fn run(&self, control: &Control) -> Result<Product, SynthesisError> {
+        make_product(&self.exemplar, &Along::Curve(self.curve.clone()), &self.settings, control)
+    }
+}
+
+fn target_ui(ui: &mut egui::Ui, label: &str, target: &mut Target, single: u32, n_range: std::ops::RangeInclusive<u32>) {
+    ui.horizontal(|ui| {
+        let label = ui.label(label);
+        ui.selectable_value(target, Target::Exactly(single), single.to_string());
+        let n = match *target {
+            Target::Exactly(n) if n != single => n,
+            _ => *n_range.start(),
+        };
+        if ui.selectable_label(matches!(*target, Target::Exactly(m) if m != single), "N").clicked() {
+            *target = Target::Exactly(n);
+        }
+        ui.selectable_value(target, Target::Any, "any");
+        if let Target::Exactly(n) = target
+            && *n != single
+        {
+            ui.add(egui::DragValue::new(n).range(n_range)).labelled_by(label.id);
+        }
+    });
+}
+
+/// The pattern controls of the vector brush.
+pub fn pattern_ui(ui: &mut egui::Ui, s: &mut Settings, commands: &mut Vec<Command>) {
+    target_ui(ui, "Components", &mut s.components, 1, 2..=100);
+    target_ui(ui, "Holes", &mut s.holes, 0, 1..=500);
+    ui.checkbox(&mut s.closed_pattern, "Closed pattern (loops run all around)");
+    ui.add(egui::Slider::new(&mut s.band_mm, 2.0..=40.0).text("Band width (mm)"));
+    ui.add(egui::Slider::new(&mut s.variety, 0.0..=2.0).text("Variety"));
+    ui.add(egui::Slider::new(&mut s.scale, 0.25..=4.0).logarithmic(true).text("Scale"));
+    ui.horizontal(|ui| {
+        let label = ui.label("Slicing");
+        ui.selectable_value(&mut s.slicing, SlicingMode::Topology, "topology");
+        let cuts = if let SlicingMode::Uniform { cuts } = s.slicing { cuts } else { DEFAULT_UNIFORM_CUTS };
+        ui.selectable_value(&mut s.slicing, SlicingMode::Uniform { cuts }, "uniform");
+        if let SlicingMode::Uniform { cuts } = &mut s.slicing {
+            ui.add(egui::DragValue::new(cuts).range(1..=40).suffix(" cuts")).labelled_by(label.id);
+        }
+    });
+    ui.add(egui::Slider::new(&mut s.min_portal_mm, 0.0..=3.0).text("Min. portal (mm)"));
+    ui.add(egui::Slider::new(&mut s.thickness_mm, 0.4..=10.0).text("Thickness (mm)"));
+    ui.horizontal(|ui| {
+        let label = ui.label("Seed");
+        ui.add(egui::DragValue::new(&mut s.seed)).labelled_by(label.id);
+        if Command::AnotherOne.button(ui, true) {
+            commands.push(Command::AnotherOne);
+        }
+    });
+}
+
+/// The next seed after `seed`, for "Another one": never 0 (the best pattern).
+pub fn next_seed(seed: u64) -> u64 {
+    seed.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407) % 1_000_000 + 1
+}
+
+impl ModeUi for VectorBrushUi {
+    fn name(&self) -> &'static str {
+        "Vector brush"
+    }
+
+    fn default_settings(&self) -> ModeSettings {
+        ModeSettings::VectorBrush(VectorBrushItem::default())
+    }
+
+    fn owns(&self, settings: &ModeSettings) -> bool {
+        matches!(settings, ModeSettings::VectorBrush(_))
+    }
+
+    fn settings_ui(&self, ui: &mut egui::Ui, settings: &mut ModeSettings, env: &mut ModeEnv<'_>) {
+        let ModeSettings::VectorBrush(item) = settings;
+        exemplar_picker_ui(ui, &mut item.exemplar, item.settings.slicing, env);
+        ui.separator();
+        ui.label(RichText::new("Pattern").strong());
+        pattern_ui(ui, &mut item.settings, env.commands);
+    }
+
+    fn job(
+        &self,
+        curve: &Curve,
+        settings: &ModeSettings,
+        doc: &Document,
+        caches: &mut Caches,
+    ) -> Result<ModeJob, DocumentError> {
+        let ModeSettings::VectorBrush(item) = settings;
+        let exemplar = caches.exemplar(doc, &item.exemplar)?;
+        Ok(ModeJob::VectorBrush(VectorBrushJob { curve: curve.clone(), exemplar, settings: item.settings.clone() }))
+    }
+}

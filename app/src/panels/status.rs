@@ -1,0 +1,57 @@
+//! The status bar: progress, the topology counted on the final geometry,
+//! time, warnings, and the last message.
+
+use egui::{Color32, RichText};
+
+use crate::TraceryApp;
+use crate::worker::JobState;
+
+/// Warnings' colour.
+const WARNING: Color32 = Color32::from_rgb(200, 140, 0);
+/// Errors' colour.
+const ERROR: Color32 = Color32::from_rgb(220, 60, 60);
+/// Width of the progress bar, points.
+const PROGRESS_WIDTH: f32 = 160.0;
+
+/// The status bar, about the selected curve (or the last one drawn).
+pub fn status_ui(app: &mut TraceryApp, ui: &mut egui::Ui) {
+    ui.horizontal(|ui| {
+        let focus = app.selected.or_else(|| app.doc.curves.last().map(|c| c.id));
+        match focus.and_then(|id| app.worker.state(id).map(|s| (id, s))) {
+            Some((id, JobState::Running { progress })) => {
+                ui.add(egui::ProgressBar::new(*progress).desired_width(PROGRESS_WIDTH).show_percentage());
+                ui.label(format!("Synthesizing curve {id}…"));
+            }
+            Some((id, JobState::Done(Ok(product)))) => {
+                let t = &product.topology;
+                let openings =
+                    if t.loop_openings > 0 { format!(" + {} loop opening", t.loop_openings) } else { String::new() };
+                let pieces = product.facts.count("pieces").map_or(String::new(), |n| format!(", {n} pieces"));
+                ui.label(format!(
+                    "Curve {id}: {} component(s), {} hole(s){openings}{pieces} — {:.0} ms",
+                    t.components,
+                    t.holes,
+                    product.timings.total_ms()
+                ));
+                for w in &product.warnings {
+                    ui.label(RichText::new(format!("Warning: {w}")).color(WARNING));
+                }
+            }
+            Some((id, JobState::Done(Err(e)))) => {
+                ui.label(RichText::new(format!("Curve {id}: {e}")).color(ERROR));
+            }
+            _ => {
+                ui.label(if app.doc.curves.is_empty() {
+                    "Draw a curve on the canvas: drag with the left button. End near the start to close a loop."
+                } else {
+                    "Ready"
+                });
+            }
+        }
+        if let Some((text, error)) = &app.message {
+            ui.separator();
+            let color = if *error { ERROR } else { ui.visuals().text_color() };
+            ui.label(RichText::new(text).color(color));
+        }
+    });
+}

@@ -1,0 +1,45 @@
+//! Canvas tools, each a small state machine driven by the canvas: a gesture
+//! begins on a primary press, moves with the pointer and ends on release.
+//! Secondary and middle drags pan whatever the tool.
+
+pub mod draw;
+pub mod edit;
+pub mod pan;
+
+use serde::{Deserialize, Serialize};
+
+/// What a primary drag on the canvas does.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
+pub enum Tool {
+    /// Draw a new curve.
+    Draw,
+    /// Select, move and reshape curves.
+    Edit,
+    /// Move the view.
+    Pan,
+}
+
+impl Tool {
+    /// Every tool, in toolbar order.
+    pub const ALL: [Tool; 3] = [Tool::Draw, Tool::Edit, Tool::Pan];
+
+    /// Its name on the toolbar.
+    pub fn label(self) -> &'static str {
+        match self {
+            Tool::Draw => "Draw",
+            Tool::Edit => "Edit",
+            Tool::Pan => "Pan",
+        }
+    }
+}
+
+/// A gesture in progress.
+#[derive(Debug)]
+pub enum Gesture {
+    /// A stroke being drawn.
+    Stroke(draw::Stroke),
+    /// A point or a whole curve being dragged.
+    Edit(edit::EditDrag),
+    /// The view being dragged.
+    Pan(pan::Pan),
+}

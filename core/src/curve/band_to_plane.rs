@@ -1,0 +1,94 @@
+//! Mapping a band-space pattern onto the plane along a curve.
+
+use glam::DVec2;
+
+use super::Curve;
+use crate::geom::{Polygon, Region, resample, union};
+use crate::report::Warning;
+
+/// A pattern laid along a curve, in the plane, in millimetres.
+#[derive(Clone, Debug, PartialEq)]
+pub struct PlanarPattern {
+    /// The pattern: clean polygons with holes.
+    pub region: Region,
+    /// What was done to keep the output free of self-intersections.
+    pub warnings: Vec<Warning>,
+    /// Smallest factor the band was narrowed by (1 where it was not).
+    pub narrowest_band: f64,
+}
+
+/// Fraction of the local radius of curvature the inner half of the band may
+/// use before it is narrowed: beyond the radius the band folds over itself.
+const CURVATURE_MARGIN: f64 = 0.85;
+
+/// Lays `band_region` (band space, exemplar units) along `curve` (millimetres), `scale`
+/// millimetres per exemplar unit. The band's `u` must run over the curve's length.
+///
+/// Where the curve turns tighter than the band's half-height, the band would
+/// fold over itself; there it is narrowed smoothly (a warning says where).
+/// Where distant parts of the curve come close enough for the band to overlap,
+/// the overlapping parts are merged by the final union (a warning says so),
+/// so the output never intersects itself.
+pub fn map_along(band_region: &Region, scale: f64, curve: &Curve) -> PlanarPattern {
+    let mut warnings = Vec::new();
+    let half = band_region.rings().flatten().map(|p| p.y.abs()).fold(0.0, f64::max) * scale;
+    let length = curve.length();
+    // Narrowing factor sampled along the curve.
+    let samples = ((length / (0.25 * half.max(1e-3))).ceil() as usize).clamp(64, 20_000);
+    let du = length / samples as f64;
+    let mut factor: Vec<f64> = (0..=samples)
+        .map(|k| {
+            let kappa = curve.curvature(k as f64 * du, half.max(du)).abs();
+            if kappa * half <= CURVATURE_MARGIN { 1.0 } else { CURVATURE_MARGIN / (kappa * half) }
+        })
+        .collect();
+    // Spread each narrowing over a band-height either side, then smooth it.
+    let reach = ((2.0 * half / du).ceil() as usize).max(1);
+    let spread: Vec<f64> = (0..=samples)
+        .map(|k| {
+            let (a, b) = (k.saturating_sub(reach), (k + reach).min(samples));
+            factor[a..=b].iter().copied().fold(1.0, f64::min)
+        })
+        .collect();
+    factor = (0..=samples)
+        .map(|k| {
+            let (a, b) = (k.saturating_sub(reach), (k + reach).min(samples));
+            spread[a..=b].iter().sum::<f64>() / (b - a + 1) as f64
+        })
+        .collect();
+    let narrowest = factor.iter().copied().fold(1.0, f64::min);
+    if narrowest < 0.999 {
+        let at = factor.iter().position(|&f| f == narrowest).unwrap_or(0) as f64 * du;
+        warnings.push(Warning::BandNarrowed { at_mm: at, percent: narrowest * 100.0 });
+    }
+    let narrowing = |u: f64| {
+        let x = (u / du).clamp(0.0, samples as f64);
+        let k = (x.floor() as usize).min(samples - 1);
+        let t = x - k as f64;
+        factor[k] * (1.0 - t) + factor[k + 1] * t
+    };
+    let step = (0.25 * half).min(length / 200.0).max(1e-3);
+    let closed = curve.is_closed();
+    let place = |p: DVec2| {
+        let mut u = p.x * scale;
+        // The end of a loop is its start: the same point, to the last bit,
+        // so that the closing seam welds.
+        if closed && (u - length).abs() <= 1e-9 * length {
+            u = 0.0;
+        }
+        curve.map(u, p.y * scale * narrowing(u))
+    };
+    let mut mapped = Vec::new();
+    for polygon in &band_region.polygons {
+        let ring = |r: &Vec<DVec2>| resample(&r.iter().map(|p| *p * scale).collect::<Vec<_>>(), step);
+        let outer = ring(&polygon.outer).into_iter().map(|p| place(p / scale)).collect();
+        let holes = polygon.holes.iter().map(|h| ring(h).into_iter().map(|p| place(p / scale)).collect()).collect();
+        mapped.push(Polygon { outer, holes });
+    }
+    let separate: f64 = mapped.iter().map(Polygon::area).sum();
+    let region = union(&[&Region::new(mapped)]);
+    if separate > 0.0 && (separate - region.area()) / separate > 1e-3 {
+        warnings.push(Warning::BandOverlapsItself { merged_percent: 100.0 * (separate - region.area()) / separate });
+    }
+    PlanarPattern { region, warnings, narrowest_band: narrowest }
+}

@@ -1,0 +1,16 @@
+//! Curves the patterns run along: smoothing, arc length and frames
+//! ([`Curve`]), the band-to-plane mapping ([`map_along`]), the topology of a
+//! pattern laid along a curve, curves read from SVG, and the `--along`
+//! specifications shared by every subcommand.
+
+mod along;
+mod band_to_plane;
+mod parametric;
+mod planar_topology;
+mod svg_path;
+
+pub use along::{Along, AlongError};
+pub use band_to_plane::{PlanarPattern, map_along};
+pub use parametric::{Curve, CurveError};
+pub use planar_topology::planar_topology;
+pub use svg_path::first_path_points;

@@ -1,0 +1,271 @@
+//! Curves that patterns follow: arc-length parameterized polylines with normals.
+
+use glam::DVec2;
+use serde::{Deserialize, Serialize};
+
+/// A smooth curve as a dense polyline, parameterized by arc length.
+///
+/// `u` runs along the curve from 0 to [`Curve::length`]; the band's `v`
+/// axis is the left normal (counter-clockwise from the tangent).
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct Curve {
+    points: Vec<DVec2>,
+    /// Arc length at each point.
+    arc: Vec<f64>,
+    /// Unit tangent at each point, smoothed over a few segments.
+    tangents: Vec<DVec2>,
+    closed: bool,
+}
+
+/// Why a curve could not be built.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+#[non_exhaustive]
+pub enum CurveError {
+    /// Fewer than two distinct points, or no length.
+    #[error("the curve needs at least two distinct points")]
+    TooShort,
+    /// A coordinate is not a finite number.
+    #[error("the curve has a coordinate that is not a number")]
+    NotFinite,
+    /// A drawing the curve was to be taken from is not an SVG document.
+    #[error("this is not an SVG file ({0})")]
+    NotSvg(String),
+    /// The drawing has no path to follow.
+    #[error("the SVG has no path to follow")]
+    NoPath,
+}
+
+impl Curve {
+    /// A curve through `points` as given (no smoothing); a closed curve joins
+    /// the last point back to the first.
+    pub fn from_polyline(points: &[DVec2], closed: bool) -> Result<Curve, CurveError> {
+        if points.iter().any(|p| !p.is_finite()) {
+            return Err(CurveError::NotFinite);
+        }
+        let mut pts: Vec<DVec2> = Vec::with_capacity(points.len() + 1);
+        for &p in points {
+            if pts.last().is_none_or(|q: &DVec2| q.distance(p) > 1e-9) {
+                pts.push(p);
+            }
+        }
+        if closed && pts.len() > 2 && pts[0].distance(*pts.last().unwrap()) <= 1e-9 {
+            pts.pop();
+        }
+        if pts.len() < 2 {
+            return Err(CurveError::TooShort);
+        }
+        if closed {
+            pts.push(pts[0]);
+        }
+        let mut arc = Vec::with_capacity(pts.len());
+        let mut acc = 0.0;
+        arc.push(0.0);
+        for w in pts.windows(2) {
+            acc += w[0].distance(w[1]);
+            arc.push(acc);
+        }
+        if acc <= 0.0 {
+            return Err(CurveError::TooShort);
+        }
+        let mut curve = Curve { points: pts, arc, tangents: Vec::new(), closed };
+        curve.tangents = curve.smoothed_tangents();
+        Ok(curve)
+    }
+
+    /// Tangents at the points, each the direction of the chord across a
+    /// window of four mean segments. A polyline's own tangent turns only at
+    /// its vertices, and unevenly after resampling; an offset of the curve by
+    /// `v` folds wherever the tangent turns faster than `1/v`, so the band
+    /// needs a frame whose turning is spread evenly.
+    fn smoothed_tangents(&self) -> Vec<DVec2> {
+        let n = self.points.len();
+        let window = 2.0 * self.length() / (n - 1) as f64;
+        self.arc
+            .iter()
+            .enumerate()
+            .map(|(k, &a)| {
+                let chord = self.point(a + window) - self.point(a - window);
+                chord.try_normalize().unwrap_or_else(|| {
+                    let (i, j) = if k + 1 < n { (k, k + 1) } else { (k - 1, k) };
+                    (self.points[j] - self.points[i]).normalize_or(DVec2::X)
+                })
+            })
+            .collect()
+    }
+
+    /// A curve from a person's stroke: smoothed (Chaikin corner cutting) and
+    /// resampled every `spacing` units, so jitter of the hand does not show.
+    ///
+    /// ```
+    /// use glam::DVec2;
+    /// use tracery_core::curve::Curve;
+    /// let stroke: Vec<DVec2> = (0..50).map(|i| DVec2::new(i as f64, if i % 2 == 0 { 0.0 } else { 0.3 })).collect();
+    /// let curve = Curve::from_stroke(&stroke, false, 1.0).unwrap();
+    /// assert!((curve.length() - 49.0).abs() < 2.0);
+    /// ```
+    pub fn from_stroke(points: &[DVec2], closed: bool, spacing: f64) -> Result<Curve, CurveError> {
+        let mut pts: Vec<DVec2> = Curve::from_polyline(points, closed)?.resampled(spacing).points;
+        if closed {
+            pts.pop();
+        }
+        for _ in 0..3 {
+            pts = chaikin(&pts, closed);
+        }
+        Ok(Curve::from_polyline(&pts, closed)?.resampled(spacing))
+    }
+
+    /// A straight line of `length` along `+x`, from the origin.
+    pub fn line(length: f64) -> Result<Curve, CurveError> {
+        Curve::from_polyline(&[DVec2::ZERO, DVec2::new(length, 0.0)], false)
+    }
+
+    /// A circle of `radius` around the origin, counter-clockwise.
+    pub fn circle(radius: f64) -> Result<Curve, CurveError> {
+        let n = 720;
+        let pts: Vec<DVec2> = (0..n)
+            .map(|i| {
+                let a = std::f64::consts::TAU * i as f64 / n as f64;
+                DVec2::new(radius * a.cos(), radius * a.sin())
+            })
+            .collect();
+        Curve::from_polyline(&pts, true)
+    }
+
+    /// A smooth S curve of arc length `length`: one period of a sine whose
+    /// amplitude is an eighth of its span.
+    pub fn wave(length: f64) -> Result<Curve, CurveError> {
+        let n = 600;
+        let unit: Vec<DVec2> = (0..=n)
+            .map(|i| {
+                let t = i as f64 / n as f64;
+                DVec2::new(t, (std::f64::consts::TAU * t).sin() / 8.0)
+            })
+            .collect();
+        let unit_length: f64 = unit.windows(2).map(|w| w[0].distance(w[1])).sum();
+        let pts: Vec<DVec2> = unit.iter().map(|p| *p * (length / unit_length)).collect();
+        Curve::from_polyline(&pts, false)
+    }
+
+    /// The same curve with points every `spacing` units of arc length.
+    pub fn resampled(&self, spacing: f64) -> Curve {
+        let count = ((self.length() / spacing.max(1e-9)).ceil() as usize).clamp(2, 200_000);
+        let mut pts: Vec<DVec2> = (0..=count).map(|k| self.point(self.length() * k as f64 / count as f64)).collect();
+        if self.closed {
+            pts.pop();
+        }
+        Curve::from_polyline(&pts, self.closed).unwrap_or_else(|_| self.clone())
+    }
+
+    /// Total arc length.
+    pub fn length(&self) -> f64 {
+        *self.arc.last().unwrap_or(&0.0)
+    }
+
+    /// Whether the curve is a loop.
+    pub fn is_closed(&self) -> bool {
+        self.closed
+    }
+
+    /// The polyline points (on a loop, the first point is repeated at the end).
+    pub fn points(&self) -> &[DVec2] {
+        &self.points
+    }
+
+    /// Segment index and fraction for arc length `u` (wrapped on loops, clamped otherwise).
+    fn locate(&self, u: f64) -> (usize, f64) {
+        let length = self.length();
+        let u = if self.closed { u.rem_euclid(length) } else { u.clamp(0.0, length) };
+        let k = self.arc.partition_point(|&a| a <= u).clamp(1, self.arc.len() - 1) - 1;
+        let span = self.arc[k + 1] - self.arc[k];
+        (k, if span > 0.0 { (u - self.arc[k]) / span } else { 0.0 })
+    }
+
+    /// The point at arc length `u`.
+    pub fn point(&self, u: f64) -> DVec2 {
+        let (k, t) = self.locate(u);
+        self.points[k].lerp(self.points[k + 1], t)
+    }
+
+    /// The unit tangent at arc length `u`, interpolated between the smoothed
+    /// tangents of the points so that it turns continuously and evenly.
+    pub fn tangent(&self, u: f64) -> DVec2 {
+        let (k, t) = self.locate(u);
+        if self.tangents.is_empty() {
+            return (self.points[k + 1] - self.points[k]).normalize_or(DVec2::X);
+        }
+        self.tangents[k].lerp(self.tangents[k + 1], t).normalize_or(self.tangents[k])
+    }
+
+    /// The unit left normal at arc length `u`.
+    pub fn normal(&self, u: f64) -> DVec2 {
+        self.tangent(u).perp()
+    }
+
+    /// Signed curvature at arc length `u` (positive when turning left), from
+    /// the turning of the tangent over `window` units of arc.
+    pub fn curvature(&self, u: f64, window: f64) -> f64 {
+        let h = 0.5 * window.max(1e-9);
+        let (a, b) = if self.closed { (u - h, u + h) } else { ((u - h).max(0.0), (u + h).min(self.length())) };
+        if b - a <= 0.0 {
+            return 0.0;
+        }
+        let ta = self.tangent(a);
+        let tb = self.tangent(b);
+        ta.perp_dot(tb).atan2(ta.dot(tb)) / (b - a)
+    }
+
+    /// The point at `(u, v)` of band space: `u` along the curve, `v` along the left normal.
+    pub fn map(&self, u: f64, v: f64) -> DVec2 {
+        self.point(u) + self.normal(u) * v
+    }
+
+    /// Winding number of the (closed) curve around `p`.
+    pub fn winding(&self, p: DVec2) -> i32 {
+        let mut w = 0;
+        for s in self.points.windows(2) {
+            let (a, b) = (s[0], s[1]);
+            if a.y <= p.y {
+                if b.y > p.y && (b - a).perp_dot(p - a) > 0.0 {
+                    w += 1;
+                }
+            } else if b.y <= p.y && (b - a).perp_dot(p - a) < 0.0 {
+                w -= 1;
+            }
+        }
+        w
+    }
+
+    /// Distance from `p` to the curve.
+    pub fn distance(&self, p: DVec2) -> f64 {
+        self.points
+            .windows(2)
+            .map(|s| {
+                let (a, b) = (s[0], s[1]);
+                let t = ((p - a).dot(b - a) / (b - a).length_squared().max(1e-300)).clamp(0.0, 1.0);
+                p.distance(a.lerp(b, t))
+            })
+            .fold(f64::INFINITY, f64::min)
+    }
+}
+
+fn chaikin(points: &[DVec2], closed: bool) -> Vec<DVec2> {
+    let n = points.len();
+    if n < 3 {
+        return points.to_vec();
+    }
+    let mut out = Vec::with_capacity(2 * n);
+    if !closed {
+        out.push(points[0]);
+    }
+    let segments = if closed { n } else { n - 1 };
+    for i in 0..segments {
+        let a = points[i];
+        let b = points[(i + 1) % n];
+        out.push(a.lerp(b, 0.25));
+        out.push(a.lerp(b, 0.75));
+    }
+    if !closed {
+        out.push(points[n - 1]);
+    }
+    out
+}

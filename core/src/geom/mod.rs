@@ -1,0 +1,18 @@
+//! Planar geometry shared by every mode: polygons with holes ([`Region`]),
+//! rectangles, booleans (the only user of `i_overlay`), the independent
+//! topology count, polyline resampling and SVG path flattening.
+
+mod boolean;
+pub mod flatten;
+mod polygon;
+mod polyline;
+mod rect;
+mod sanity;
+mod topology;
+
+pub use boolean::{FillRule, clip_to_rect, difference, resolve_contours, union};
+pub use polygon::{Polygon, Region, ring_contains, signed_area};
+pub use polyline::resample;
+pub use rect::Rect;
+pub use sanity::{MIN_RING_AREA, RegionDefect};
+pub use topology::{PatternTopology, Topology, count_topology};

@@ -1,0 +1,142 @@
+//! What a run tells the person besides its geometry: typed [`Warning`]s and
+//! [`Timings`] per stage.
+
+use std::time::Instant;
+
+use serde::Serialize;
+use serde::ser::SerializeMap;
+
+/// Something the person should know about a result that was still produced.
+#[derive(Clone, Debug, PartialEq)]
+#[non_exhaustive]
+pub enum Warning {
+    /// The curve turns tighter than half the band: the band was narrowed there.
+    BandNarrowed {
+        /// Where, along the curve, mm.
+        at_mm: f64,
+        /// The band's height there, percent of the asked height.
+        percent: f64,
+    },
+    /// Distant parts of the curve come close: the band overlapped and was merged.
+    BandOverlapsItself {
+        /// Share of the pattern's area merged away, percent.
+        merged_percent: f64,
+    },
+    /// No sequence of pieces fits the curve's length within 5%.
+    LengthMismatch {
+        /// Whether the pattern was stretched (`true`) or compressed to fit.
+        stretched: bool,
+        /// How much, percent.
+        percent: f64,
+    },
+    /// The final geometry's topology differs from the planned one.
+    TopologyDiffers {
+        /// Components planned by the solver.
+        planned_components: usize,
+        /// Holes planned by the solver.
+        planned_holes: usize,
+        /// Components counted on the final geometry.
+        counted_components: usize,
+        /// Holes counted on the final geometry.
+        counted_holes: usize,
+    },
+}
+
+impl std::fmt::Display for Warning {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            Warning::BandNarrowed { at_mm, percent } => write!(
+                f,
+                "the curve turns tighter than the band near {at_mm:.0} mm along it: the band was narrowed to {percent:.0}% there"
+            ),
+            Warning::BandOverlapsItself { merged_percent } => write!(
+                f,
+                "the band overlaps itself where the curve comes close to itself: {merged_percent:.1}% of the pattern was merged there"
+            ),
+            Warning::LengthMismatch { stretched, percent } => write!(
+                f,
+                "no sequence of pieces fits the curve within 5%: the pattern is {} by {percent:.0}%",
+                if *stretched { "stretched" } else { "compressed" }
+            ),
+            Warning::TopologyDiffers { planned_components, planned_holes, counted_components, counted_holes } => {
+                write!(
+                    f,
+                    "the final geometry has {counted_components} component(s) and {counted_holes} hole(s), not the {planned_components} and {planned_holes} planned: the band touches itself"
+                )
+            }
+        }
+    }
+}
+
+impl Serialize for Warning {
+    fn serialize<S: serde::Serializer>(&self, serializer: S) -> Result<S::Ok, S::Error> {
+        serializer.collect_str(self)
+    }
+}
+
+/// Time spent in each stage, in milliseconds, in the order the stages ran.
+/// Serialized as a map from stage name to milliseconds.
+///
+/// ```
+/// use tracery_core::report::Timings;
+/// let mut timings = Timings::default();
+/// let answer = timings.time("solve", || 6 * 7);
+/// timings.add_ms("solve", 1.0);
+/// assert_eq!(answer, 42);
+/// assert_eq!(timings.stages().len(), 1);
+/// assert!(timings.stage_ms("solve").unwrap() >= 1.0);
+/// ```
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct Timings {
+    stages: Vec<(&'static str, f64)>,
+}
+
+impl Timings {
+    /// Adds `ms` to `stage` (a new stage goes last).
+    pub fn add_ms(&mut self, stage: &'static str, ms: f64) {
+        match self.stages.iter_mut().find(|(name, _)| *name == stage) {
+            Some((_, total)) => *total += ms,
+            None => self.stages.push((stage, ms)),
+        }
+    }
+
+    /// Runs `work` and adds its wall-clock time to `stage`.
+    pub fn time<T>(&mut self, stage: &'static str, work: impl FnOnce() -> T) -> T {
+        let start = Instant::now();
+        let out = work();
+        self.add_ms(stage, start.elapsed().as_secs_f64() * 1e3);
+        out
+    }
+
+    /// Adds every stage of `other` to this one.
+    pub fn absorb(&mut self, other: &Timings) {
+        for &(stage, ms) in &other.stages {
+            self.add_ms(stage, ms);
+        }
+    }
+
+    /// Milliseconds of one stage.
+    pub fn stage_ms(&self, stage: &str) -> Option<f64> {
+        self.stages.iter().find(|(name, _)| *name == stage).map(|(_, ms)| *ms)
+    }
+
+    /// The stages and their milliseconds, in order.
+    pub fn stages(&self) -> &[(&'static str, f64)] {
+        &self.stages
+    }
+
+    /// Milliseconds over all stages.
+    pub fn total_ms(&self) -> f64 {
+        self.stages.iter().map(|(_, ms)| ms).sum()
+    }
+}
+
+impl Serialize for Timings {
+    fn serialize<S: serde::Serializer>(&self, serializer: S) -> Result<S::Ok, S::Error> {
+        let mut map = serializer.serialize_map(Some(self.stages.len()))?;
+        for (stage, ms) in &self.stages {
+            map.serialize_entry(stage, ms)?;
+        }
+        map.end()
+    }
+}

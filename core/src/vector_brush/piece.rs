@@ -1,0 +1,145 @@
+//! Pieces cut from an exemplar, with their portals and descriptors.
+
+use glam::DVec2;
+
+use super::{Exemplar, PairCost, Portal, SliceError, SliceOptions, TopologyDescriptor, cut_positions, portals_at};
+use crate::geom::{Rect, Region, clip_to_rect};
+
+/// One piece of an exemplar, between two cut lines (or an end of the exemplar).
+#[derive(Clone, Debug, PartialEq)]
+pub struct Piece {
+    /// Position in the exemplar, left to right.
+    pub index: usize,
+    /// `u` of the left side, in exemplar coordinates.
+    pub u_start: f64,
+    /// Width along `u`.
+    pub width: f64,
+    /// The material between the two sides, in exemplar coordinates.
+    pub region: Region,
+    /// Portals on the left side, top to bottom (none at the exemplar's left end).
+    pub left: Vec<Portal>,
+    /// Portals on the right side, top to bottom (none at the exemplar's right end).
+    pub right: Vec<Portal>,
+    /// How the portals connect through the material.
+    pub descriptor: TopologyDescriptor,
+}
+
+impl Piece {
+    /// `u` of the right side, in exemplar coordinates.
+    pub fn u_end(&self) -> f64 {
+        self.u_start + self.width
+    }
+
+    /// Portal endpoint heights on the left side, top to bottom (two per portal).
+    pub fn left_endpoints(&self) -> impl Iterator<Item = f64> + '_ {
+        self.left.iter().flat_map(|p| [p.top, p.bottom])
+    }
+
+    /// Portal endpoint heights on the right side, top to bottom.
+    pub fn right_endpoints(&self) -> impl Iterator<Item = f64> + '_ {
+        self.right.iter().flat_map(|p| [p.top, p.bottom])
+    }
+}
+
+/// An exemplar cut into pieces, with the matching cost of every compatible pair.
+#[derive(Clone, Debug)]
+pub struct PieceSet {
+    /// Pieces, left to right.
+    pub pieces: Vec<Piece>,
+    /// The cut positions used, in exemplar `u`.
+    pub cuts: Vec<f64>,
+    /// Height of the exemplar, the scale that matching costs are measured in.
+    pub exemplar_height: f64,
+    /// Width of the exemplar.
+    pub exemplar_width: f64,
+    pairs: Vec<Option<PairCost>>,
+}
+
+/// Finds which polygon of `region` a portal belongs to, probing just inside
+/// the piece next to the portal's middle.
+fn polygon_of(region: &Region, u: f64, portal: &Portal, inward: f64) -> usize {
+    let probe = DVec2::new(u + inward, portal.middle());
+    if let Some(i) = region.polygons.iter().position(|p| p.contains(probe)) {
+        return i;
+    }
+    // A sliver thinner than the probe step: take the nearest polygon.
+    let probe = DVec2::new(u, portal.middle());
+    let distance = |ring: &Vec<DVec2>| {
+        (0..ring.len())
+            .map(|i| {
+                let (a, b) = (ring[i], ring[(i + 1) % ring.len()]);
+                let t = ((probe - a).dot(b - a) / (b - a).length_squared().max(f64::MIN_POSITIVE)).clamp(0.0, 1.0);
+                (a + (b - a) * t).distance(probe)
+            })
+            .fold(f64::INFINITY, f64::min)
+    };
+    (0..region.polygons.len())
+        .min_by(|&a, &b| distance(&region.polygons[a].outer).total_cmp(&distance(&region.polygons[b].outer)))
+        .unwrap_or(0)
+}
+
+impl PieceSet {
+    /// Cuts `exemplar` as `options` say and analyses every piece.
+    ///
+    /// ```
+    /// use tracery_core::vector_brush::{builtin, PieceSet, SliceOptions};
+    /// let set = PieceSet::new(&builtin("lace").unwrap(), &SliceOptions::default()).unwrap();
+    /// assert!(set.pieces.len() >= 4);
+    /// assert!(set.pieces[0].left.is_empty());
+    /// ```
+    pub fn new(exemplar: &Exemplar, options: &SliceOptions) -> Result<Self, SliceError> {
+        let cuts = cut_positions(exemplar, options)?;
+        let width = exemplar.width();
+        let mut bounds: Vec<f64> = Vec::with_capacity(cuts.len() + 2);
+        bounds.push(0.0);
+        bounds.extend(&cuts);
+        bounds.push(width);
+        let side_portals: Vec<Vec<Portal>> = cuts.iter().map(|&c| portals_at(&exemplar.region, c)).collect();
+        let margin = exemplar.height().max(width);
+        let inward = width * 1e-6;
+        let pieces = (0..bounds.len() - 1)
+            .map(|i| {
+                let (a, b) = (bounds[i], bounds[i + 1]);
+                let rect = Rect::new(
+                    DVec2::new(a, exemplar.bounds.min.y - margin),
+                    DVec2::new(b, exemplar.bounds.max.y + margin),
+                );
+                let region = clip_to_rect(&exemplar.region, &rect);
+                let left = if i == 0 { Vec::new() } else { side_portals[i - 1].clone() };
+                let right = if i + 1 == bounds.len() - 1 { Vec::new() } else { side_portals[i].clone() };
+                let left_ids: Vec<u8> = left.iter().map(|p| polygon_of(&region, a, p, inward) as u8).collect();
+                let right_ids: Vec<u8> = right.iter().map(|p| polygon_of(&region, b, p, -inward) as u8).collect();
+                let touching = |k: usize| left_ids.contains(&(k as u8)) || right_ids.contains(&(k as u8));
+                let closed = (0..region.polygons.len()).filter(|&k| !touching(k)).count();
+                let descriptor =
+                    TopologyDescriptor::new(&left_ids, &right_ids, closed as u16, region.hole_count() as u16);
+                Piece { index: i, u_start: a, width: b - a, region, left, right, descriptor }
+            })
+            .collect::<Vec<_>>();
+        let exemplar_height = exemplar.height();
+        let n = pieces.len();
+        let mut pairs = Vec::with_capacity(n * n);
+        for a in &pieces {
+            for b in &pieces {
+                pairs.push(PairCost::between(a, b, exemplar_height));
+            }
+        }
+        Ok(PieceSet { pieces, cuts, exemplar_height, exemplar_width: width, pairs })
+    }
+
+    /// Number of pieces.
+    pub fn len(&self) -> usize {
+        self.pieces.len()
+    }
+
+    /// Whether there is no piece.
+    pub fn is_empty(&self) -> bool {
+        self.pieces.is_empty()
+    }
+
+    /// The cost of following piece `a` with piece `b`, or `None` when their
+    /// portal counts differ.
+    pub fn pair(&self, a: usize, b: usize) -> Option<&PairCost> {
+        self.pairs[a * self.pieces.len() + b].as_ref()
+    }
+}

@@ -1,0 +1,188 @@
+//! The vector brush's pipeline, from an exemplar and a curve to a planar
+//! pattern, each stage timed.
+
+use glam::DVec2;
+
+use super::{
+    BandPattern, CurveKind, Exemplar, ExemplarError, InvalidSetting, PieceSet, Settings, SliceError, SliceOptions,
+    Solution, SolveError, SolveOptions, position_offsets, stitch,
+};
+use crate::control::{Control, MaybeCancelled};
+use crate::curve::{Curve, CurveError, PlanarPattern, map_along, planar_topology};
+use crate::geom::{PatternTopology, count_topology};
+use crate::mesh::MeshError;
+use crate::report::{Timings, Warning};
+
+/// Why synthesis failed.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+#[non_exhaustive]
+pub enum SynthesisError {
+    /// A setting is out of range.
+    #[error(transparent)]
+    Setting(#[from] InvalidSetting),
+    /// The curve cannot carry a pattern.
+    #[error(transparent)]
+    Curve(#[from] CurveError),
+    /// The exemplar could not be cut.
+    #[error(transparent)]
+    Slice(#[from] SliceError),
+    /// The solver found nothing (or was stopped).
+    #[error(transparent)]
+    Solve(#[from] SolveError),
+    /// An intermediate pattern could not be used as an exemplar (rectangles).
+    #[error("the first pass of the rectangle gave no usable pattern: {0}")]
+    Intermediate(String),
+    /// The pattern could not be turned into a solid.
+    #[error(transparent)]
+    Mesh(#[from] MeshError),
+}
+
+impl From<ExemplarError> for SynthesisError {
+    fn from(e: ExemplarError) -> Self {
+        SynthesisError::Intermediate(e.to_string())
+    }
+}
+
+impl MaybeCancelled for SynthesisError {
+    fn is_cancelled(&self) -> bool {
+        matches!(self, SynthesisError::Solve(e) if e.is_cancelled())
+    }
+}
+
+/// A synthesized pattern with everything known about it.
+#[derive(Clone, Debug)]
+pub struct Synthesis {
+    /// Millimetres per exemplar unit used.
+    pub scale_mm_per_unit: f64,
+    /// Pieces the exemplar was cut into.
+    pub piece_count: usize,
+    /// The solver's answer.
+    pub solution: Solution,
+    /// The pattern in band space (exemplar units).
+    pub band: BandPattern,
+    /// The pattern in the plane (millimetres).
+    pub planar: PlanarPattern,
+    /// Topology counted on `planar`, independently of the solver.
+    pub topology: PatternTopology,
+    /// Time per stage: `analysis`, `solve`, `geometry`.
+    pub timings: Timings,
+    /// Things the person should know.
+    pub warnings: Vec<Warning>,
+}
+
+/// Relative length error past which the person is told the pattern was
+/// stretched or compressed to fit.
+pub const LENGTH_WARNING: f64 = 0.05;
+
+/// Synthesizes a pattern from `exemplar` along `curve` (millimetres).
+///
+/// ```
+/// use tracery_core::control::Control;
+/// use tracery_core::curve::Curve;
+/// use tracery_core::vector_brush::{Settings, builtin, synthesize};
+/// let synthesis = synthesize(&builtin("vine").unwrap(), &Curve::line(80.0).unwrap(), &Settings::default(), &Control::default()).unwrap();
+/// assert_eq!(synthesis.topology.components, 1);
+/// ```
+pub fn synthesize(
+    exemplar: &Exemplar,
+    curve: &Curve,
+    settings: &Settings,
+    control: &Control,
+) -> Result<Synthesis, SynthesisError> {
+    settings.validate()?;
+    synthesize_at_scale(exemplar, curve, settings, settings.mm_per_unit(exemplar.height()), control)
+}
+
+fn synthesize_at_scale(
+    exemplar: &Exemplar,
+    curve: &Curve,
+    settings: &Settings,
+    scale: f64,
+    control: &Control,
+) -> Result<Synthesis, SynthesisError> {
+    if !(scale.is_finite() && scale > 0.0) {
+        return Err(InvalidSetting(format!("the scale {scale} mm per unit must be positive")).into());
+    }
+    let mut timings = Timings::default();
+    let mut slicing = SliceOptions::default();
+    slicing.mode = settings.slicing;
+    slicing.min_portal = settings.min_portal_mm / scale;
+    slicing.event_grouping = settings.event_grouping;
+    let set = timings.time("analysis", || PieceSet::new(exemplar, &slicing))?;
+
+    let kind = if curve.is_closed() { CurveKind::Closed } else { CurveKind::Open };
+    let mut options = SolveOptions::new(curve.length() / scale);
+    options.curve = kind;
+    options.components = settings.components;
+    options.holes = settings.holes;
+    options.closed_pattern = settings.closed_pattern && kind == CurveKind::Closed;
+    options.variety = settings.variety;
+    options.seed = settings.seed;
+    let solution = timings.time("solve", || super::solve(&set, &options, control))?;
+
+    let (band, planar, topology) = timings.time("geometry", || {
+        let offsets = position_offsets(&set, &solution.pieces, kind);
+        let band = stitch(&set, &solution.pieces, &offsets, curve.length() / scale, kind);
+        let planar = map_along(&band.region, scale, curve);
+        let topology = planar_topology(&planar.region, curve);
+        (band, planar, topology)
+    });
+
+    let mut warnings = planar.warnings.clone();
+    let stretch = curve.length() / (solution.length * scale) - 1.0;
+    if stretch.abs() > LENGTH_WARNING {
+        warnings.push(Warning::LengthMismatch { stretched: stretch > 0.0, percent: stretch.abs() * 100.0 });
+    }
+    let (planned_components, planned_holes) = (solution.components as usize, solution.holes as usize);
+    if topology.components != planned_components || topology.holes != planned_holes {
+        warnings.push(Warning::TopologyDiffers {
+            planned_components,
+            planned_holes,
+            counted_components: topology.components,
+            counted_holes: topology.holes,
+        });
+    }
+    Ok(Synthesis {
+        scale_mm_per_unit: scale,
+        piece_count: set.len(),
+        solution,
+        band,
+        planar,
+        topology,
+        timings,
+        warnings,
+    })
+}
+
+/// Synthesizes a rectangle `width_mm` × `height_mm` in two passes (section
+/// 6.2): a strip along `u` first, then that strip, turned 90°, used as the
+/// exemplar along `v`. Both passes keep the topology targets.
+pub fn synthesize_rectangle(
+    exemplar: &Exemplar,
+    width_mm: f64,
+    height_mm: f64,
+    settings: &Settings,
+    control: &Control,
+) -> Result<Synthesis, SynthesisError> {
+    let first = synthesize(exemplar, &Curve::line(width_mm)?, settings, control)?;
+    // The strip, turned so that its height runs along u.
+    let turned = first.planar.region.map_points(|p| DVec2::new(p.y, -p.x));
+    let strip = Exemplar::from_region("strip", turned)?;
+    let mut second_settings = settings.clone();
+    second_settings.band_mm = width_mm;
+    // The strip is as tall as the rectangle is wide: group its events on
+    // the scale of the first band, not of the whole width.
+    second_settings.event_grouping = settings.event_grouping * settings.band_mm / width_mm;
+    // The strip is already in millimetres.
+    let second = synthesize_at_scale(&strip, &Curve::line(height_mm)?, &second_settings, 1.0, control)?;
+    let planar = PlanarPattern {
+        region: second.planar.region.map_points(|p| DVec2::new(-p.y + 0.5 * width_mm, p.x)),
+        warnings: [first.planar.warnings, second.planar.warnings.clone()].concat(),
+        narrowest_band: 1.0,
+    };
+    let mut timings = first.timings;
+    timings.absorb(&second.timings);
+    let counted = count_topology(&planar.region);
+    let topology = PatternTopology { components: counted.components, holes: counted.holes, loop_openings: 0 };
+    Ok(Synthesis { warnings: [first.warnings, second.warnings].concat(), topology, planar, timings, ..second })
+}

@@ -1,0 +1,91 @@
+//! The vector brush's [`Product`]: the pattern, its solid, overlays and facts.
+
+use glam::DVec2;
+
+use super::{Exemplar, Settings, Synthesis, SynthesisError, Target, synthesize, synthesize_rectangle};
+use crate::Product;
+use crate::control::Control;
+use crate::curve::Along;
+use crate::mesh::extrude;
+use crate::product::{Fact, Facts, Overlays};
+
+/// Samples per millimetre of the band's edges drawn on the canvas.
+const BAND_EDGE_SAMPLES_PER_MM: f64 = 1.0;
+
+fn target_text(t: Target) -> String {
+    match t {
+        Target::Exactly(n) => n.to_string(),
+        Target::Any => "any".into(),
+    }
+}
+
+/// Runs the whole vector brush: synthesis along `along`, then the solid
+/// (`settings.thickness_mm`), overlays and the figures a report shows.
+///
+/// ```
+/// use tracery_core::control::Control;
+/// use tracery_core::curve::Along;
+/// use tracery_core::vector_brush::{Settings, builtin, make_product};
+/// let along = Along::parse("circle:25").unwrap();
+/// let product = make_product(&builtin("lace").unwrap(), &along, &Settings::default(), &Control::default()).unwrap();
+/// assert_eq!(product.topology.components, 1);
+/// assert_eq!(product.mesh_mm.unwrap().shell_count(), 1);
+/// ```
+pub fn make_product(
+    exemplar: &Exemplar,
+    along: &Along,
+    settings: &Settings,
+    control: &Control,
+) -> Result<Product, SynthesisError> {
+    let synthesis = match along {
+        Along::Curve(curve) => synthesize(exemplar, curve, settings, control)?,
+        Along::Rectangle { width_mm, height_mm } => {
+            synthesize_rectangle(exemplar, *width_mm, *height_mm, settings, control)?
+        }
+    };
+    let Synthesis { scale_mm_per_unit, piece_count, solution, band, planar, topology, mut timings, warnings } =
+        synthesis;
+    let mesh = timings.time("mesh", || extrude(&planar.region, settings.thickness_mm))?;
+    let mut overlays = Overlays::default();
+    let length_mm = match along {
+        Along::Curve(curve) => {
+            let half = 0.5 * settings.band_mm;
+            let steps = ((curve.length() * BAND_EDGE_SAMPLES_PER_MM).ceil() as usize).clamp(2, 5000);
+            let edge = |side: f64| -> Vec<DVec2> {
+                (0..=steps).map(|k| curve.map(curve.length() * k as f64 / steps as f64, side * half)).collect()
+            };
+            overlays.band_edges_mm = vec![edge(1.0), edge(-1.0)];
+            overlays.seams_mm = band
+                .seams
+                .iter()
+                .map(|&u| [curve.map(u * scale_mm_per_unit, -half), curve.map(u * scale_mm_per_unit, half)])
+                .collect();
+            band.length * scale_mm_per_unit
+        }
+        Along::Rectangle { .. } => planar.region.bounds().map_or(0.0, |b| b.width()),
+    };
+    let mut facts = Facts::default();
+    facts.push("target_components", Fact::Text(target_text(settings.components)));
+    facts.push("target_holes", Fact::Text(target_text(settings.holes)));
+    facts.push("target_length_mm", Fact::Number(along.length_mm()));
+    facts.push("length_mm", Fact::Number(length_mm));
+    facts.push("synthesized_length_mm", Fact::Number(solution.length * scale_mm_per_unit));
+    facts.push("scale_mm_per_unit", Fact::Number(scale_mm_per_unit));
+    facts.push("cost", Fact::Number(solution.cost));
+    facts.push("pieces", Fact::Count(solution.pieces.len()));
+    facts.push("piece_sequence", Fact::Indices(solution.pieces.clone()));
+    facts.push("pieces_in_exemplar", Fact::Count(piece_count));
+    facts.push("dp_states", Fact::Count(solution.states));
+    Ok(Product {
+        fill_mm: mesh.top_faces(),
+        region_mm: planar.region,
+        paths_mm: Vec::new(),
+        mesh_mm: Some(mesh),
+        image: None,
+        overlays,
+        topology,
+        warnings,
+        timings,
+        facts,
+    })
+}

@@ -1,0 +1,105 @@
+//! [`Settings`]: everything a person chooses for the vector brush, declared
+//! once. The document stores it, the command line's flags default to it and
+//! the app's controls edit it, so the app and `tracery synth` give the same
+//! pattern for the same input.
+
+use serde::{Deserialize, Serialize};
+
+use super::{SliceOptions, SlicingMode, Target};
+
+/// The vector brush's settings, with the one documented set of defaults
+/// (`docs/vector-brush.md` lists them).
+///
+/// ```
+/// use tracery_core::vector_brush::{Settings, Target};
+/// let mut settings = Settings::default();
+/// assert_eq!(settings.components, Target::Exactly(1));
+/// settings.band_mm = 14.0;
+/// assert!(settings.validate().is_ok());
+/// settings.band_mm = -1.0;
+/// assert!(settings.validate().is_err());
+/// ```
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(default)]
+#[non_exhaustive]
+pub struct Settings {
+    /// Connected components wanted.
+    pub components: Target,
+    /// Holes wanted in the lace (a loop's central opening is not counted).
+    pub holes: Target,
+    /// On loops, ask for a pattern that runs all around (ignored on open curves).
+    pub closed_pattern: bool,
+    /// Height of the band across the curve, mm.
+    pub band_mm: f64,
+    /// Variety: weight of the autocorrelation penalty; 0 turns it off.
+    pub variety: f64,
+    /// Exemplar scale relative to fitting its height to the band (1: fits).
+    pub scale: f64,
+    /// How the exemplar is cut.
+    pub slicing: SlicingMode,
+    /// Cuts through features thinner than this are dropped, mm.
+    pub min_portal_mm: f64,
+    /// Topology events closer than this fraction of the exemplar's height are grouped.
+    pub event_grouping: f64,
+    /// Printed thickness, mm.
+    pub thickness_mm: f64,
+    /// 0 for the best pattern; any other value gives another one.
+    pub seed: u64,
+}
+
+impl Default for Settings {
+    fn default() -> Self {
+        Settings {
+            components: Target::Exactly(1),
+            holes: Target::Any,
+            closed_pattern: true,
+            band_mm: 10.0,
+            variety: 0.3,
+            scale: 1.0,
+            slicing: SlicingMode::Topology,
+            min_portal_mm: 0.0,
+            event_grouping: SliceOptions::default().event_grouping,
+            thickness_mm: 2.0,
+            seed: 0,
+        }
+    }
+}
+
+/// A setting out of range, in words a person understands.
+#[derive(Clone, Debug, PartialEq, thiserror::Error)]
+#[error("{0}")]
+pub struct InvalidSetting(pub String);
+
+impl Settings {
+    /// Checks every number is in range.
+    pub fn validate(&self) -> Result<(), InvalidSetting> {
+        let positive = |what: &str, x: f64, unit: &str| {
+            if x.is_finite() && x > 0.0 {
+                Ok(())
+            } else {
+                Err(InvalidSetting(format!("{what} must be a positive number{unit}, not {x}")))
+            }
+        };
+        positive("the band", self.band_mm, " of millimetres")?;
+        positive("the scale", self.scale, "")?;
+        positive("the thickness", self.thickness_mm, " of millimetres")?;
+        if !(self.variety.is_finite() && self.variety >= 0.0) {
+            return Err(InvalidSetting(format!("variety must be zero or more, not {}", self.variety)));
+        }
+        if !(self.min_portal_mm.is_finite() && self.min_portal_mm >= 0.0) {
+            return Err(InvalidSetting(format!(
+                "the minimum portal must be zero or more millimetres, not {}",
+                self.min_portal_mm
+            )));
+        }
+        if !(self.event_grouping.is_finite() && self.event_grouping >= 0.0) {
+            return Err(InvalidSetting(format!("event grouping must be zero or more, not {}", self.event_grouping)));
+        }
+        Ok(())
+    }
+
+    /// Millimetres per exemplar unit for an exemplar `exemplar_height` units tall.
+    pub fn mm_per_unit(&self, exemplar_height: f64) -> f64 {
+        self.scale * self.band_mm / exemplar_height.max(f64::MIN_POSITIVE)
+    }
+}

@@ -1,0 +1,242 @@
+//! The topology solver: dynamic programming over piece sequences (sections 3.5 to 3.7).
+//!
+//! # State
+//!
+//! A partial solution is keyed by *(last piece, topology descriptor, length)*,
+//! with the length counted in integer steps of a small quantum. Lengths only
+//! grow, so states are expanded in order of length, and two partial solutions
+//! compete only when they agree on all three: no solution is lost because it
+//! differs from a cheaper one in length alone (the paper keys by the number of
+//! pieces instead, which merges sequences of different lengths). With the
+//! variety term off and no band limit, the search is exact over the
+//! quantized widths; the exactness test checks it against exhaustive search.
+//!
+//! Descriptors are interned and each *(descriptor, piece) → descriptor* join
+//! is computed once, which turns the search into a shortest path over a small
+//! product graph.
+//!
+//! # Closed curves
+//!
+//! A loop has no first piece, so every cycle is searched in the rotation that
+//! starts with its smallest piece index: one search per start piece `s`, using
+//! only pieces `≥ s`, run in parallel. At the end the descriptor is joined with
+//! itself ([`TopologyDescriptor::close_loop`]).
+
+mod diagnosis;
+mod search;
+mod state;
+
+use serde::{Deserialize, Serialize};
+
+use super::{PieceSet, SolveError};
+use crate::control::Control;
+use diagnosis::diagnose;
+use search::search_all;
+pub use state::LengthGrid;
+
+/// A target for a count: an exact number, or anything.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash, Serialize, Deserialize)]
+pub enum Target {
+    /// Exactly this many.
+    Exactly(u32),
+    /// Any number.
+    #[default]
+    Any,
+}
+
+impl Target {
+    /// Whether `n` meets the target.
+    pub fn accepts(&self, n: u32) -> bool {
+        match self {
+            Target::Exactly(t) => n == *t,
+            Target::Any => true,
+        }
+    }
+
+    /// Whether a count that can only grow has already passed the target.
+    fn exceeded_by(&self, n: u32) -> bool {
+        matches!(self, Target::Exactly(t) if n > *t)
+    }
+}
+
+impl std::fmt::Display for Target {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            Target::Exactly(n) => write!(f, "exactly {n}"),
+            Target::Any => write!(f, "any number of"),
+        }
+    }
+}
+
+/// Whether the curve is open or a loop.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash, Serialize, Deserialize)]
+pub enum CurveKind {
+    /// From one end to the other: the pattern starts and ends without open portals.
+    #[default]
+    Open,
+    /// A loop: the last piece joins the first.
+    Closed,
+}
+
+/// What to synthesize.
+#[derive(Clone, Debug, PartialEq)]
+#[non_exhaustive]
+pub struct SolveOptions {
+    /// Length of the curve, in exemplar units.
+    pub target_length: f64,
+    /// Open curve or loop.
+    pub curve: CurveKind,
+    /// Connected components wanted.
+    pub components: Target,
+    /// Holes wanted. On loops, the central opening of a pattern that runs
+    /// around the loop is not counted: it is not a hole in the lace.
+    pub holes: Target,
+    /// On loops, keep only patterns with a component that runs all around.
+    pub closed_pattern: bool,
+    /// Height of the band, in exemplar units: partial solutions whose
+    /// accumulated vertical offset leaves `±band_height / 2` are dropped.
+    /// Infinite turns the limit off.
+    pub band_height: f64,
+    /// Relative length tolerance ε / L (the paper's 0.05); widened when no
+    /// solution meets it.
+    pub length_tolerance: f64,
+    /// Weight of the length term `((l - L) / ε)²` added to a finished
+    /// pattern's cost, so that among patterns within the tolerance the ones
+    /// that need less stretching win when seams cost about the same.
+    pub length_weight: f64,
+    /// Weight β of the autocorrelation penalty; 0 turns it off.
+    pub variety: f64,
+    /// σ of the autocorrelation similarity, in piece indices.
+    pub autocorrelation_sigma: f64,
+    /// Length quantum in exemplar units; `None` picks a third of the
+    /// narrowest piece (at most a fiftieth of ε).
+    pub length_quantum: Option<f64>,
+    /// Most DP states held at once before giving up with an error.
+    pub max_states: usize,
+    /// Zero for the best solution; any other value perturbs the seam costs
+    /// along the curve to give another, slightly worse, pattern.
+    pub seed: u64,
+}
+
+impl SolveOptions {
+    /// Options for a curve of `target_length` exemplar units, one component, any holes.
+    pub fn new(target_length: f64) -> Self {
+        SolveOptions {
+            target_length,
+            curve: CurveKind::Open,
+            components: Target::Exactly(1),
+            holes: Target::Any,
+            closed_pattern: false,
+            band_height: f64::INFINITY,
+            length_tolerance: 0.05,
+            length_weight: 0.05,
+            variety: 0.0,
+            autocorrelation_sigma: 0.5,
+            length_quantum: None,
+            max_states: 2_000_000,
+            seed: 0,
+        }
+    }
+}
+
+/// The chosen piece sequence and what it achieves.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct Solution {
+    /// Piece indices, in order along the curve.
+    pub pieces: Vec<usize>,
+    /// Vertical offset of each piece accumulated from the pairwise alignments
+    /// `τ`, first piece at 0 (exemplar units).
+    pub offsets: Vec<f64>,
+    /// The objective minimized: matching cost, plus `β` times the
+    /// autocorrelation, plus the length term.
+    pub cost: f64,
+    /// Matching cost `F(η)`: the sum of seam costs (the closing seam included on loops).
+    pub matching_cost: f64,
+    /// Autocorrelation of the sequence (the variety term before weighting).
+    pub autocorrelation: f64,
+    /// Sum of piece widths, exemplar units.
+    pub length: f64,
+    /// The curve length asked for.
+    pub target_length: f64,
+    /// The length tolerance finally used (widened when needed).
+    pub tolerance: f64,
+    /// Components of the result, from the descriptors.
+    pub components: u32,
+    /// Holes in the lace (on loops, without the central openings).
+    pub holes: u32,
+    /// On loops, components that run all around; 0 on open curves.
+    pub wraps: u32,
+    /// DP states created over all searches.
+    pub states: usize,
+}
+
+/// Bytes one DP state takes, with its share of the bucket maps and the
+/// variety history; used to turn the state cap into megabytes.
+pub const STATE_BYTES: usize = 96;
+
+/// Finds the best piece sequence for `options`.
+///
+/// ```
+/// use tracery_core::control::Control;
+/// use tracery_core::vector_brush::{builtin, solve, PieceSet, SliceOptions, SolveOptions};
+/// let set = PieceSet::new(&builtin("lace").unwrap(), &SliceOptions::default()).unwrap();
+/// let solution = solve(&set, &SolveOptions::new(3.0 * set.exemplar_width), &Control::default()).unwrap();
+/// assert_eq!(solution.components, 1);
+/// assert!((solution.length / solution.target_length - 1.0).abs() <= solution.tolerance / solution.target_length + 0.01);
+/// ```
+pub fn solve(set: &PieceSet, options: &SolveOptions, control: &Control) -> Result<Solution, SolveError> {
+    validate(set, options)?;
+    match search_all(set, options, control)? {
+        Some(solution) => Ok(solution),
+        None => Err(SolveError::NoSolution(diagnose(set, options, control)?)),
+    }
+}
+
+fn validate(set: &PieceSet, options: &SolveOptions) -> Result<(), SolveError> {
+    let invalid = |what: String| Err(SolveError::InvalidOption(what));
+    if set.is_empty() {
+        return invalid("the exemplar has no piece".into());
+    }
+    if !(options.target_length.is_finite() && options.target_length > 0.0) {
+        return invalid(format!("the curve length {} must be a positive number", options.target_length));
+    }
+    if !(options.length_tolerance.is_finite() && options.length_tolerance > 0.0) {
+        return invalid(format!("the length tolerance {} must be positive", options.length_tolerance));
+    }
+    if !(options.length_weight.is_finite() && options.length_weight >= 0.0) {
+        return invalid(format!("the length weight {} must be zero or more", options.length_weight));
+    }
+    if !(options.variety.is_finite() && options.variety >= 0.0) {
+        return invalid(format!("variety {} must be zero or more", options.variety));
+    }
+    if options.autocorrelation_sigma.is_nan() || options.autocorrelation_sigma <= 0.0 {
+        return invalid("the autocorrelation sigma must be positive".into());
+    }
+    if options.band_height.is_nan() || options.band_height <= 0.0 {
+        return invalid(format!("the band height {} must be positive", options.band_height));
+    }
+    let grid = LengthGrid::new(set, options);
+    let widest = set.pieces.iter().map(|p| p.width).fold(0.0, f64::max);
+    if grid.quantum.is_nan()
+        || grid.quantum <= 0.0
+        || options.target_length / grid.quantum > 5e7
+        || widest / grid.quantum > 5e6
+    {
+        return invalid("the length quantum is too small for this curve".into());
+    }
+    Ok(())
+}
+
+/// The length tolerances tried in turn, in exemplar units: ε, then wider
+/// when nothing fits, up to half the length. Beyond that the pattern would be
+/// stretched out of shape and the targets, not the length, are the problem.
+pub fn tolerance_levels(options: &SolveOptions) -> Vec<f64> {
+    let base = options.length_tolerance * options.target_length;
+    let mut levels = vec![base];
+    for wider in [4.0 * base, 0.5 * options.target_length] {
+        if wider > *levels.last().unwrap_or(&0.0) {
+            levels.push(wider);
+        }
+    }
+    levels
+}

@@ -1,0 +1,436 @@
+//! The search: one dynamic program per start piece (in parallel on loops),
+//! over growing length tolerances, and the finished solution recomputed from
+//! the pieces themselves.
+
+use std::sync::atomic::{AtomicUsize, Ordering};
+
+use rayon::prelude::*;
+
+use super::state::{Bucket, Interner, LengthGrid, NO_PARENT, PRUNED, State, UNKNOWN};
+use super::{CurveKind, STATE_BYTES, Solution, SolveOptions, Target, tolerance_levels};
+use crate::control::{Control, StateCap};
+use crate::vector_brush::{Autocorrelation, PieceSet, Similarity, SolveError, TopologyDescriptor};
+
+/// Everything one search needs that does not change while it runs.
+pub(super) struct Problem<'a> {
+    set: &'a PieceSet,
+    options: &'a SolveOptions,
+    grid: LengthGrid,
+    steps: Vec<u32>,
+    /// Pair costs, seed jitter excluded, `NaN` when incompatible.
+    cost: Vec<f64>,
+    tau: Vec<f64>,
+    jitter: f64,
+    similarity: Similarity,
+    states: &'a AtomicUsize,
+    created: &'a AtomicUsize,
+    work_done: &'a AtomicUsize,
+    work_total: usize,
+    control: &'a Control<'a>,
+}
+
+/// The best finished sequence of one search, if any.
+pub(super) struct Found {
+    total: f64,
+    pieces: Vec<usize>,
+    offsets: Vec<f64>,
+}
+
+fn mix(mut x: u64) -> u64 {
+    // splitmix64: a well-spread hash of the seed and the seam.
+    x = x.wrapping_add(0x9e37_79b9_7f4a_7c15);
+    x = (x ^ (x >> 30)).wrapping_mul(0xbf58_476d_1ce4_e5b9);
+    x = (x ^ (x >> 27)).wrapping_mul(0x94d0_49bb_1331_11eb);
+    x ^ (x >> 31)
+}
+
+impl Problem<'_> {
+    fn n(&self) -> usize {
+        self.set.len()
+    }
+
+    fn clamp(&self, d: &TopologyDescriptor) -> TopologyDescriptor {
+        let closed = if self.options.components == Target::Any { 0 } else { d.closed_components() as u16 };
+        let holes = if self.options.holes == Target::Any { 0 } else { d.holes() as u16 };
+        d.with_counters(closed, holes)
+    }
+
+    /// Whether a partial solution can still meet the targets.
+    fn viable(&self, d: &TopologyDescriptor) -> bool {
+        !self.options.components.exceeded_by(d.min_final_components()) && !self.options.holes.exceeded_by(d.holes())
+    }
+
+    fn join(&self, interner: &mut Interner, descriptor: u32, piece: usize) -> u32 {
+        let slot = descriptor as usize * interner.pieces + piece;
+        let cached = interner.joins[slot];
+        if cached != UNKNOWN {
+            return cached;
+        }
+        let joined = interner.list[descriptor as usize]
+            .join(&self.set.pieces[piece].descriptor)
+            .map(|d| self.clamp(&d))
+            .filter(|d| self.viable(d));
+        let id = match joined {
+            Some(d) => interner.intern(d),
+            None => PRUNED,
+        };
+        interner.joins[slot] = id;
+        id
+    }
+
+    fn seam_cost(&self, a: usize, b: usize, length: u32) -> f64 {
+        let base = self.cost[a * self.n() + b];
+        if self.options.seed == 0 || self.jitter == 0.0 {
+            return base;
+        }
+        // Vary the perturbation along the curve, in blocks of about a piece,
+        // so that another seed changes the pattern everywhere, not just once.
+        let block = u64::from(length / self.steps[a].max(1));
+        let h = mix(self.options.seed ^ mix(block << 32 | (a as u64) << 16 | b as u64));
+        base + self.jitter * (h >> 11) as f64 / (1u64 << 53) as f64
+    }
+
+    pub(super) fn finished(&self, d: &TopologyDescriptor) -> Option<(u32, u32, u32)> {
+        match self.options.curve {
+            CurveKind::Open => d.is_finished().then(|| (d.components(), d.holes(), 0)),
+            CurveKind::Closed => d.close_loop().map(|t| (t.components, t.holes, t.wraps)),
+        }
+    }
+
+    fn meets_targets(&self, t: (u32, u32, u32)) -> bool {
+        let loop_ok = self.options.curve == CurveKind::Open || !self.options.closed_pattern || t.2 > 0;
+        self.options.components.accepts(t.0) && self.options.holes.accepts(t.1) && loop_ok
+    }
+
+    fn report_progress(&self) {
+        let done = self.work_done.fetch_add(1, Ordering::Relaxed) + 1;
+        if let Some(progress) = self.control.progress
+            && (done.is_multiple_of(16) || done == self.work_total)
+        {
+            progress((done as f32 / self.work_total.max(1) as f32).min(1.0));
+        }
+    }
+
+    /// One search from the given start pieces, using pieces `>= min_piece`,
+    /// up to `window.1` steps; returns the best finished sequence in `window`.
+    fn search(&self, starts: &[usize], min_piece: usize, window: (u32, u32)) -> Result<Option<Found>, SolveError> {
+        let mut search = Search::new(self, starts, min_piece, window);
+        let result = search.run();
+        self.states.fetch_sub(search.arena.len(), Ordering::Relaxed);
+        result?;
+        Ok(search.best.map(|(total, end)| search.backtrack(end, total)))
+    }
+}
+
+/// The table of one search: states in an arena, grouped by length.
+pub(super) struct Search<'p> {
+    problem: &'p Problem<'p>,
+    starts: &'p [usize],
+    window: (u32, u32),
+    /// For each piece, the pieces that may follow it.
+    compatible: Vec<Vec<usize>>,
+    interner: Interner,
+    arena: Vec<State>,
+    /// Variety history per state, only when the variety term is on.
+    auto: Vec<Autocorrelation>,
+    /// States by length, modulo the widest piece: only lengths within one
+    /// piece of the current one are ever open, and their tables are reused.
+    buckets: Vec<Bucket>,
+    best: Option<(f64, u32)>,
+}
+
+impl<'p> Search<'p> {
+    fn new(problem: &'p Problem<'p>, starts: &'p [usize], min_piece: usize, window: (u32, u32)) -> Self {
+        let n = problem.n();
+        let compatible =
+            (0..n).map(|a| (min_piece..n).filter(|&b| !problem.cost[a * n + b].is_nan()).collect()).collect();
+        let ring = problem.steps.iter().copied().max().unwrap_or(1) as usize + 1;
+        Search {
+            problem,
+            starts,
+            window,
+            compatible,
+            interner: Interner::new(n),
+            arena: Vec::new(),
+            auto: Vec::new(),
+            buckets: (0..ring).map(|_| Bucket::default()).collect(),
+            best: None,
+        }
+    }
+
+    fn variety(&self) -> bool {
+        self.problem.options.variety > 0.0
+    }
+
+    fn total(&self, state: &State, correlation: &Autocorrelation) -> f64 {
+        if self.variety() { state.cost + self.problem.options.variety * correlation.value() } else { state.cost }
+    }
+
+    /// Keeps `state` at `length` unless a cheaper one with the same key is
+    /// there. `penalty_floor` is a lower bound of the variety penalty of
+    /// `state` (its parent's: the per-lag sums only grow), so the new
+    /// autocorrelation is computed only when the state may win.
+    fn add(
+        &mut self,
+        length: u32,
+        state: State,
+        penalty_floor: f64,
+        correlation: impl FnOnce(&Self) -> Autocorrelation,
+    ) -> Result<(), SolveError> {
+        // Descriptor ids are dense and few: a state's key indexes a table.
+        let key = state.descriptor as usize * self.problem.n() + usize::from(state.piece);
+        let slot = length as usize % self.buckets.len();
+        let variety = self.variety();
+        if let Some(existing) = self.buckets[slot].get(key) {
+            let old = &self.arena[existing as usize];
+            let old_total = if variety { self.total(old, &self.auto[existing as usize]) } else { old.cost };
+            if old_total <= state.cost + penalty_floor {
+                return Ok(());
+            }
+            if variety {
+                let correlation = correlation(self);
+                if self.total(&state, &correlation) < old_total {
+                    self.arena[existing as usize] = state;
+                    self.auto[existing as usize] = correlation;
+                }
+            } else {
+                self.arena[existing as usize] = state;
+            }
+            return Ok(());
+        }
+        let problem = self.problem;
+        if problem.states.fetch_add(1, Ordering::Relaxed) + 1 > problem.options.max_states {
+            let cap = StateCap { max_states: problem.options.max_states, bytes_per_state: STATE_BYTES };
+            return Err(SolveError::TooManyStates { limit: cap.max_states, megabytes: cap.megabytes() });
+        }
+        problem.created.fetch_add(1, Ordering::Relaxed);
+        self.buckets[slot].insert(key, self.arena.len() as u32);
+        self.arena.push(state);
+        if variety {
+            let correlation = correlation(self);
+            self.auto.push(correlation);
+        }
+        Ok(())
+    }
+
+    fn run(&mut self) -> Result<(), SolveError> {
+        let problem = self.problem;
+        let n = problem.n();
+        let max_len = self.window.1;
+        let half_band = 0.5 * problem.options.band_height;
+        for &s in self.starts {
+            let length = problem.steps[s];
+            let d = problem.clamp(&problem.set.pieces[s].descriptor);
+            if length > max_len || !problem.viable(&d) {
+                continue;
+            }
+            let descriptor = self.interner.intern(d);
+            let state = State { cost: 0.0, parent: NO_PARENT, descriptor, delta: 0.0, piece: s as u16 };
+            self.add(length, state, 0.0, |_| Autocorrelation::default().push(s, &problem.similarity))?;
+        }
+        let mut open: Vec<u32> = Vec::new();
+        for length in 0..=max_len {
+            problem.control.check()?;
+            problem.report_progress();
+            let slot = length as usize % self.buckets.len();
+            open.clear();
+            self.buckets[slot].drain_into(&mut open);
+            for &index in &open {
+                let state = self.arena[index as usize];
+                let a = state.piece as usize;
+                if length >= self.window.0 {
+                    self.consider_end(index, length);
+                }
+                for k in 0..self.compatible[a].len() {
+                    let b = self.compatible[a][k];
+                    let next_length = length + problem.steps[b];
+                    if next_length > max_len {
+                        continue;
+                    }
+                    let delta = state.delta + problem.tau[a * n + b] as f32;
+                    if f64::from(delta.abs()) > half_band {
+                        continue;
+                    }
+                    let descriptor = problem.join(&mut self.interner, state.descriptor, b);
+                    if descriptor == PRUNED {
+                        continue;
+                    }
+                    let next = State {
+                        cost: state.cost + problem.seam_cost(a, b, length),
+                        parent: index,
+                        descriptor,
+                        delta,
+                        piece: b as u16,
+                    };
+                    let floor =
+                        if self.variety() { problem.options.variety * self.auto[index as usize].value() } else { 0.0 };
+                    self.add(next_length, next, floor, |search| {
+                        search.auto[index as usize].push(b, &problem.similarity)
+                    })?;
+                }
+            }
+        }
+        Ok(())
+    }
+
+    /// Records the state as a finished pattern if it closes and meets the targets.
+    fn consider_end(&mut self, index: u32, length: u32) {
+        let problem = self.problem;
+        let options = problem.options;
+        let state = &self.arena[index as usize];
+        let a = state.piece as usize;
+        let target = f64::from(problem.grid.target);
+        let epsilon = (f64::from(self.window.1) - target).max(1.0);
+        let mut total = state.cost + options.length_weight * ((f64::from(length) - target) / epsilon).powi(2);
+        if options.curve == CurveKind::Closed {
+            // One search per start piece: its only start closes the loop.
+            let s = self.starts[0];
+            let closing = problem.cost[a * problem.n() + s];
+            let delta = state.delta + problem.tau[a * problem.n() + s] as f32;
+            if closing.is_nan() || f64::from(delta.abs()) > 0.5 * options.band_height {
+                return;
+            }
+            total += closing;
+        }
+        let Some(t) = problem.finished(&self.interner.list[state.descriptor as usize]) else {
+            return;
+        };
+        if !problem.meets_targets(t) {
+            return;
+        }
+        if self.variety() {
+            total += options.variety * self.auto[index as usize].value();
+        }
+        if self.best.is_none_or(|(b, _)| total < b) {
+            self.best = Some((total, index));
+        }
+    }
+
+    fn backtrack(&self, end: u32, total: f64) -> Found {
+        let mut pieces = Vec::new();
+        let mut offsets = Vec::new();
+        let mut i = end;
+        while i != NO_PARENT {
+            let s = &self.arena[i as usize];
+            pieces.push(s.piece as usize);
+            offsets.push(f64::from(s.delta));
+            i = s.parent;
+        }
+        pieces.reverse();
+        offsets.reverse();
+        Found { total, pieces, offsets }
+    }
+}
+
+/// Runs the searches for growing tolerances until one finds a solution.
+pub(super) fn search_all(
+    set: &PieceSet,
+    options: &SolveOptions,
+    control: &Control,
+) -> Result<Option<Solution>, SolveError> {
+    let n = set.len();
+    let grid = LengthGrid::new(set, options);
+    let steps: Vec<u32> = set.pieces.iter().map(|p| grid.steps(p.width)).collect();
+    let mut cost = vec![f64::NAN; n * n];
+    let mut tau = vec![0.0; n * n];
+    for a in 0..n {
+        for b in 0..n {
+            if let Some(pair) = set.pair(a, b) {
+                cost[a * n + b] = pair.cost;
+                tau[a * n + b] = pair.tau;
+            }
+        }
+    }
+    let compatible_costs: Vec<f64> = cost.iter().copied().filter(|c| !c.is_nan()).collect();
+    let jitter = 0.5 * compatible_costs.iter().sum::<f64>() / compatible_costs.len().max(1) as f64;
+    let states = AtomicUsize::new(0);
+    let created = AtomicUsize::new(0);
+    let work_done = AtomicUsize::new(0);
+    let tolerances = tolerance_levels(options);
+    let runs_per_level = match options.curve {
+        CurveKind::Open => 1,
+        CurveKind::Closed => n,
+    };
+    let first_window = grid.window(tolerances[0]);
+    let work_total = runs_per_level * (first_window.1 as usize + 1);
+    let mut problem = Problem {
+        set,
+        options,
+        grid,
+        steps,
+        cost,
+        tau,
+        jitter,
+        similarity: Similarity::new(options.autocorrelation_sigma),
+        states: &states,
+        created: &created,
+        work_done: &work_done,
+        work_total,
+        control,
+    };
+    for &tolerance in &tolerances {
+        let window = grid.window(tolerance);
+        let window = (window.0, window.1.max(1));
+        problem.work_total = problem.work_total.max(runs_per_level * (window.1 as usize + 1));
+        let found = match options.curve {
+            CurveKind::Open => {
+                let starts: Vec<usize> = (0..n).filter(|&i| set.pieces[i].left.is_empty()).collect();
+                problem.search(&starts, 0, window)?
+            }
+            CurveKind::Closed => {
+                let results: Vec<Result<Option<Found>, SolveError>> =
+                    (0..n).into_par_iter().map(|s| problem.search(&[s], s, window)).collect();
+                let mut best: Option<Found> = None;
+                for r in results {
+                    if let Some(f) = r?
+                        && best.as_ref().is_none_or(|b| f.total < b.total)
+                    {
+                        best = Some(f);
+                    }
+                }
+                best
+            }
+        };
+        if let Some(found) = found {
+            if let Some(progress) = control.progress {
+                progress(1.0);
+            }
+            return Ok(Some(finish(set, options, found, tolerance, created.load(Ordering::Relaxed))));
+        }
+    }
+    Ok(None)
+}
+
+/// Recomputes what a sequence achieves from the pieces themselves.
+fn finish(set: &PieceSet, options: &SolveOptions, found: Found, tolerance: f64, created: usize) -> Solution {
+    let n = found.pieces.len();
+    let mut matching = 0.0;
+    let mut descriptor = set.pieces[found.pieces[0]].descriptor.clone();
+    for w in found.pieces.windows(2) {
+        matching += set.pair(w[0], w[1]).map_or(0.0, |p| p.cost);
+        descriptor = descriptor.join(&set.pieces[w[1]].descriptor).unwrap_or(descriptor);
+    }
+    let (components, holes, wraps) = match options.curve {
+        CurveKind::Open => (descriptor.components(), descriptor.holes(), 0),
+        CurveKind::Closed => {
+            matching += set.pair(found.pieces[n - 1], found.pieces[0]).map_or(0.0, |p| p.cost);
+            let t = descriptor.close_loop().unwrap_or_default();
+            (t.components, t.holes, t.wraps)
+        }
+    };
+    let similarity = Similarity::new(options.autocorrelation_sigma);
+    Solution {
+        length: found.pieces.iter().map(|&p| set.pieces[p].width).sum(),
+        autocorrelation: Autocorrelation::of(&found.pieces, &similarity).value(),
+        pieces: found.pieces,
+        offsets: found.offsets,
+        cost: found.total,
+        matching_cost: matching,
+        target_length: options.target_length,
+        tolerance,
+        components,
+        holes,
+        wraps,
+        states: created,
+    }
+}

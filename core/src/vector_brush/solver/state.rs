@@ -1,0 +1,104 @@
+//! The solver's state: lengths on an integer grid, DP states in length
+//! buckets, and interned topology descriptors with memoized joins.
+
+use rustc_hash::FxHashMap;
+
+use super::{PieceSet, SolveOptions};
+use crate::vector_brush::TopologyDescriptor;
+
+/// Lengths as integer steps of a quantum, shared by the solver and its tests.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct LengthGrid {
+    /// Exemplar units per step.
+    pub quantum: f64,
+    /// The target length in steps.
+    pub target: u32,
+}
+
+impl LengthGrid {
+    /// The grid the solver uses for `set` and `options`.
+    pub fn new(set: &PieceSet, options: &SolveOptions) -> Self {
+        let narrowest = set.pieces.iter().map(|p| p.width).fold(f64::INFINITY, f64::min);
+        let epsilon = options.length_tolerance * options.target_length;
+        let quantum = options.length_quantum.unwrap_or_else(|| (narrowest / 3.0).min(epsilon / 50.0).max(1e-12));
+        LengthGrid { quantum, target: (options.target_length / quantum).round() as u32 }
+    }
+
+    /// A width (or length) in steps; every piece takes at least one step.
+    pub fn steps(&self, width: f64) -> u32 {
+        ((width / self.quantum).round() as u32).max(1)
+    }
+
+    /// The accepted window `[lo, hi]` in steps for a tolerance in exemplar units.
+    pub fn window(&self, tolerance: f64) -> (u32, u32) {
+        let e = (tolerance / self.quantum).floor() as u32;
+        (self.target.saturating_sub(e), self.target + e)
+    }
+}
+
+pub(super) const UNKNOWN: u32 = u32::MAX - 1;
+pub(super) const PRUNED: u32 = u32::MAX;
+pub(super) const NO_PARENT: u32 = u32::MAX;
+
+#[derive(Clone, Copy)]
+pub(super) struct State {
+    pub(super) cost: f64,
+    pub(super) parent: u32,
+    pub(super) descriptor: u32,
+    pub(super) delta: f32,
+    pub(super) piece: u16,
+}
+
+/// The states of one length, indexed by `descriptor × pieces + piece`.
+#[derive(Default)]
+pub(super) struct Bucket {
+    pub(super) slots: Vec<u32>,
+    /// Occupied slots, in insertion order (which is also the expansion order).
+    pub(super) occupied: Vec<u32>,
+}
+
+impl Bucket {
+    pub(super) fn get(&self, key: usize) -> Option<u32> {
+        self.slots.get(key).copied().filter(|&i| i != NO_PARENT)
+    }
+
+    pub(super) fn insert(&mut self, key: usize, index: u32) {
+        if key >= self.slots.len() {
+            self.slots.resize((key + 1).next_power_of_two(), NO_PARENT);
+        }
+        self.slots[key] = index;
+        self.occupied.push(key as u32);
+    }
+
+    /// Moves the state indices out, leaving the bucket empty for reuse.
+    pub(super) fn drain_into(&mut self, out: &mut Vec<u32>) {
+        for key in self.occupied.drain(..) {
+            out.push(std::mem::replace(&mut self.slots[key as usize], NO_PARENT));
+        }
+    }
+}
+
+/// Descriptors seen in one search, with memoized joins.
+pub(super) struct Interner {
+    pub(super) ids: FxHashMap<TopologyDescriptor, u32>,
+    pub(super) list: Vec<TopologyDescriptor>,
+    pub(super) joins: Vec<u32>,
+    pub(super) pieces: usize,
+}
+
+impl Interner {
+    pub(super) fn new(pieces: usize) -> Self {
+        Interner { ids: FxHashMap::default(), list: Vec::new(), joins: Vec::new(), pieces }
+    }
+
+    pub(super) fn intern(&mut self, d: TopologyDescriptor) -> u32 {
+        if let Some(&id) = self.ids.get(&d) {
+            return id;
+        }
+        let id = self.list.len() as u32;
+        self.ids.insert(d.clone(), id);
+        self.list.push(d);
+        self.joins.resize(self.joins.len() + self.pieces, UNKNOWN);
+        id
+    }
+}

@@ -1,0 +1,280 @@
+//! Gap stitching (section 4.2) and the final contours (section 4.3): the
+//! chosen pieces deformed so that they meet exactly, merged into a pattern in
+//! band space.
+//!
+//! Instead of the paper's linear rotation-invariant deformation of piece
+//! boundaries, each piece is moved by a smooth closed-form field, which needs
+//! no linear solve and cannot tear the piece apart:
+//!
+//! 1. along `u`, the sequence is stretched uniformly to the exact curve length;
+//! 2. across, each side of a piece gets a monotone cubic map (PCHIP) sending its
+//!    portal endpoints, raised by the piece's offset `δ`, to the average of the
+//!    two sides' endpoints; the two side maps are blended with a smoothstep along
+//!    `u`, so the interior moves smoothly and the seam sees only its own side's map;
+//! 3. near each seam, a bump that vanishes on the seam line bends the boundary so
+//!    that both sides leave each shared endpoint with the same (averaged) slope.
+//!
+//! Matched endpoints therefore coincide exactly, the portal segments of both
+//! sides lie on the same seam line, and tangents agree: no gap, no overlap, no
+//! kink. Monotone maps keep every piece free of fold-overs.
+
+use glam::DVec2;
+use serde::{Deserialize, Serialize};
+
+use super::{CurveKind, PieceSet};
+use crate::geom::{Polygon, Region, resample, union};
+
+/// A synthesized pattern in band space: `u` from 0 to the curve length,
+/// `v` across the band, in exemplar units.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct BandPattern {
+    /// The merged pattern: clean polygons with holes.
+    pub region: Region,
+    /// Length along `u`.
+    pub length: f64,
+    /// `u` of every seam between pieces (the closing seam at 0 on loops not repeated).
+    pub seams: Vec<f64>,
+    /// Whether the pattern is for a loop (`u = 0` and `u = length` are the same line).
+    pub curve: CurveKind,
+}
+
+/// A monotone cubic map through `(x_k, y_k)` with `x` increasing, continued
+/// with slope 1 beyond the ends (Fritsch–Carlson).
+struct MonotoneMap {
+    x: Vec<f64>,
+    y: Vec<f64>,
+    slope: Vec<f64>,
+}
+
+impl MonotoneMap {
+    fn new(points: &[(f64, f64)]) -> Self {
+        let x: Vec<f64> = points.iter().map(|p| p.0).collect();
+        let y: Vec<f64> = points.iter().map(|p| p.1).collect();
+        let n = x.len();
+        let secant: Vec<f64> = (0..n.saturating_sub(1)).map(|k| (y[k + 1] - y[k]) / (x[k + 1] - x[k])).collect();
+        let mut slope = vec![1.0; n];
+        for k in 0..n {
+            slope[k] = if k == 0 || k == n - 1 {
+                let s = secant[if k == 0 { 0 } else { n - 2 }];
+                1.0f64.min(3.0 * s)
+            } else if secant[k - 1] * secant[k] <= 0.0 {
+                0.0
+            } else {
+                // Harmonic mean keeps the interpolant monotone.
+                2.0 / (1.0 / secant[k - 1] + 1.0 / secant[k])
+            };
+        }
+        MonotoneMap { x, y, slope }
+    }
+
+    fn eval(&self, v: f64) -> (f64, f64) {
+        let n = self.x.len();
+        if v <= self.x[0] {
+            return (self.y[0] + (v - self.x[0]), 1.0);
+        }
+        if v >= self.x[n - 1] {
+            return (self.y[n - 1] + (v - self.x[n - 1]), 1.0);
+        }
+        let k = self.x.partition_point(|&x| x <= v).saturating_sub(1).min(n - 2);
+        let h = self.x[k + 1] - self.x[k];
+        let t = (v - self.x[k]) / h;
+        let (t2, t3) = (t * t, t * t * t);
+        let value = (2.0 * t3 - 3.0 * t2 + 1.0) * self.y[k]
+            + (t3 - 2.0 * t2 + t) * h * self.slope[k]
+            + (-2.0 * t3 + 3.0 * t2) * self.y[k + 1]
+            + (t3 - t2) * h * self.slope[k + 1];
+        let derivative = (6.0 * t2 - 6.0 * t) / h * self.y[k]
+            + (3.0 * t2 - 4.0 * t + 1.0) * self.slope[k]
+            + (-6.0 * t2 + 6.0 * t) / h * self.y[k + 1]
+            + (3.0 * t2 - 2.0 * t) * self.slope[k + 1];
+        (value, derivative)
+    }
+}
+
+/// How one side of a placed piece moves across the band.
+enum SideMap {
+    /// No portal: a plain shift by the piece's offset.
+    Shift(f64),
+    /// Portal endpoints sent to their targets.
+    Portals(MonotoneMap),
+}
+
+impl SideMap {
+    fn eval(&self, v: f64) -> (f64, f64) {
+        match self {
+            SideMap::Shift(d) => (v + d, 1.0),
+            SideMap::Portals(m) => m.eval(v),
+        }
+    }
+}
+
+/// The slope correction at one shared endpoint of a seam.
+struct Bend {
+    /// Target height of the endpoint (after the side maps).
+    at: f64,
+    /// Heights of the neighbouring endpoints on the seam (support of the weight).
+    below: f64,
+    above: f64,
+    /// Slope to add at the seam.
+    coefficient: f64,
+}
+
+fn smoothstep(t: f64) -> f64 {
+    let t = t.clamp(0.0, 1.0);
+    t * t * (3.0 - 2.0 * t)
+}
+
+/// Largest slope change the bending is allowed, so that it stays gentle.
+const MAX_BEND: f64 = 1.5;
+
+/// Stitches the pieces of `sequence`, raised by `offsets`, into one pattern
+/// of exactly `length` exemplar units along `u`.
+pub fn stitch(set: &PieceSet, sequence: &[usize], offsets: &[f64], length: f64, curve: CurveKind) -> BandPattern {
+    let n = sequence.len();
+    let pieces: Vec<&super::Piece> = sequence.iter().map(|&i| &set.pieces[i]).collect();
+    let total: f64 = pieces.iter().map(|p| p.width).sum();
+    let stretch = length / total;
+    let mut seam_u = Vec::with_capacity(n + 1);
+    let mut acc = 0.0;
+    for p in &pieces {
+        seam_u.push(acc * stretch);
+        acc += p.width;
+    }
+    seam_u.push(length);
+
+    // For each seam k (between piece k-1 and piece k; seam 0 / n is the loop's
+    // closing seam), the shared endpoint targets.
+    let joined = |k: usize| -> Option<(usize, usize)> {
+        let (a, b) = if k == n { (n - 1, 0) } else { (k - 1, k) };
+        let linked = !pieces[a].right.is_empty() && set.pair(sequence[a], sequence[b]).is_some();
+        (linked && (k < n || curve == CurveKind::Closed)).then_some((a, b))
+    };
+    let mut right_maps: Vec<SideMap> = (0..n).map(|i| SideMap::Shift(offsets[i])).collect();
+    let mut left_maps: Vec<SideMap> = (0..n).map(|i| SideMap::Shift(offsets[i])).collect();
+    let mut right_bends: Vec<Vec<Bend>> = (0..n).map(|_| Vec::new()).collect();
+    let mut right_targets: Vec<Vec<f64>> = vec![Vec::new(); n];
+    let mut left_targets: Vec<Vec<f64>> = vec![Vec::new(); n];
+    let mut left_bends: Vec<Vec<Bend>> = (0..n).map(|_| Vec::new()).collect();
+    let seams_to_join: Vec<usize> = match curve {
+        CurveKind::Open => (1..n).collect(),
+        CurveKind::Closed => (1..=n).collect(),
+    };
+    for k in seams_to_join {
+        let Some((a, b)) = joined(k) else { continue };
+        let ya: Vec<f64> = pieces[a].right_endpoints().map(|y| y + offsets[a]).collect();
+        let yb: Vec<f64> = pieces[b].left_endpoints().map(|y| y + offsets[b]).collect();
+        let targets: Vec<f64> = ya.iter().zip(&yb).map(|(p, q)| 0.5 * (p + q)).collect();
+        // Top-to-bottom lists become increasing in v for the maps.
+        let map = |ys: &[f64], delta: f64| {
+            let mut points: Vec<(f64, f64)> = ys.iter().zip(&targets).map(|(y, t)| (y - delta, *t)).collect();
+            points.reverse();
+            MonotoneMap::new(&points)
+        };
+        let map_a = map(&ya, offsets[a]);
+        let map_b = map(&yb, offsets[b]);
+        let ga: Vec<DVec2> = pieces[a].right.iter().flat_map(|p| [p.top_tangent, p.bottom_tangent]).collect();
+        let gb: Vec<DVec2> = pieces[b].left.iter().flat_map(|p| [p.top_tangent, p.bottom_tangent]).collect();
+        let slope = |g: DVec2, derivative: f64| {
+            if g.x.abs() < 1e-6 { f64::NAN } else { derivative * g.y / g.x / stretch }
+        };
+        for e in 0..targets.len() {
+            let sa = slope(ga[e], map_a.eval(ya[e] - offsets[a]).1);
+            let sb = slope(gb[e], map_b.eval(yb[e] - offsets[b]).1);
+            if !(sa.is_finite() && sb.is_finite()) {
+                continue;
+            }
+            let mean = 0.5 * (sa + sb);
+            let above = if e == 0 {
+                2.0 * targets[0] - targets.get(1).copied().unwrap_or(targets[0] - 1.0)
+            } else {
+                targets[e - 1]
+            };
+            let below = if e + 1 == targets.len() {
+                2.0 * targets[e] - targets.get(e.wrapping_sub(1)).copied().unwrap_or(targets[e] + 1.0)
+            } else {
+                targets[e + 1]
+            };
+            right_bends[a].push(Bend {
+                at: targets[e],
+                below,
+                above,
+                coefficient: (mean - sa).clamp(-MAX_BEND, MAX_BEND),
+            });
+            left_bends[b].push(Bend {
+                at: targets[e],
+                below,
+                above,
+                coefficient: (mean - sb).clamp(-MAX_BEND, MAX_BEND),
+            });
+        }
+        right_maps[a] = SideMap::Portals(map_a);
+        left_maps[b] = SideMap::Portals(map_b);
+        right_targets[a] = targets.clone();
+        left_targets[b] = targets;
+    }
+
+    // Far below any feature, far above the rounding of the clipping.
+    let snap = 1e-6 * set.exemplar_width;
+    let snap_v = 1e-6 * set.exemplar_height;
+    let no_targets: Vec<f64> = Vec::new();
+    let mut polygons = Vec::new();
+    for (i, piece) in pieces.iter().enumerate() {
+        let (u0, u1) = (seam_u[i], seam_u[i + 1]);
+        let width = u1 - u0;
+        let radius = 0.3 * width;
+        let step = (piece.width / 12.0).min(set.exemplar_height / 24.0).max(1e-9);
+        let place = |p: DVec2| -> DVec2 {
+            // Points on a cut must land exactly on the seam line, whatever
+            // rounding the clipping left in them.
+            let t = if (p.x - piece.u_start).abs() <= snap {
+                0.0
+            } else if (p.x - piece.u_end()).abs() <= snap {
+                1.0
+            } else {
+                ((p.x - piece.u_start) / piece.width).clamp(0.0, 1.0)
+            };
+            let u = (1.0 - t) * u0 + t * u1;
+            let h = smoothstep(t);
+            let (left, _) = left_maps[i].eval(p.y);
+            let (right, _) = right_maps[i].eval(p.y);
+            let mut v = (1.0 - h) * left + h * right;
+            let mut bend = 0.0;
+            for (bends, seam) in [(&left_bends[i], u0), (&right_bends[i], u1)] {
+                let x = (u - seam).abs() / radius;
+                if x >= 1.0 {
+                    continue;
+                }
+                let falloff = (1.0 - x) * (1.0 - x) * (1.0 + 2.0 * x);
+                for b in bends.iter() {
+                    let weight = if v >= b.at {
+                        (1.0 - (v - b.at) / (b.above - b.at).max(1e-12)).clamp(0.0, 1.0)
+                    } else {
+                        (1.0 - (b.at - v) / (b.at - b.below).max(1e-12)).clamp(0.0, 1.0)
+                    };
+                    bend += b.coefficient * (u - seam) * falloff * weight;
+                }
+            }
+            v += bend;
+            // Endpoints on a seam take the shared target itself, to the last
+            // bit, so that both sides weld wherever they are mapped.
+            let targets = if t == 0.0 {
+                &left_targets[i]
+            } else if t == 1.0 {
+                &right_targets[i]
+            } else {
+                &no_targets
+            };
+            if let Some(&target) = targets.iter().find(|&&target| (v - target).abs() <= snap_v) {
+                v = target;
+            }
+            DVec2::new(u, v)
+        };
+        for polygon in &piece.region.polygons {
+            let deform = |ring: &Vec<DVec2>| resample(ring, step).into_iter().map(place).collect::<Vec<_>>();
+            polygons.push(Polygon { outer: deform(&polygon.outer), holes: polygon.holes.iter().map(deform).collect() });
+        }
+    }
+    let region = union(&[&Region::new(polygons)]);
+    let seams = seam_u[1..n].to_vec();
+    BandPattern { region, length, seams, curve }
+}

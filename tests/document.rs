@@ -1,0 +1,112 @@
+//! Projects: a file written before documents were versioned still opens,
+//! with every curve's settings, and the current format round-trips.
+
+use std::path::PathBuf;
+
+use egui_kittest::Harness;
+use tracery::TraceryApp;
+use tracery::cli::SynthArgs;
+use tracery::dialogs::{FileKind, ScriptedDialogs};
+use tracery::document::{Document, DocumentError, ExemplarRef, FORMAT_VERSION, ModeSettings, VectorBrushItem};
+use tracery::worker::JobState;
+use tracery_core::vector_brush::{Settings, SlicingMode, Target};
+
+#[path = "common/ui.rs"]
+mod ui;
+use ui::settle;
+
+fn format_0_project() -> PathBuf {
+    PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../tests/data/project-format-0.ron")
+}
+
+fn vector(item: &ModeSettings) -> &VectorBrushItem {
+    let ModeSettings::VectorBrush(v) = item else { panic!("not a vector-brush curve") };
+    v
+}
+
+#[test]
+fn a_project_saved_before_versioning_opens_with_its_settings() {
+    let text = std::fs::read_to_string(format_0_project()).unwrap();
+    assert!(!text.contains("format_version"), "the checked-in file is from before versioning");
+    let doc = Document::from_ron(&text).unwrap();
+    assert_eq!(doc.format_version, FORMAT_VERSION);
+    assert_eq!(doc.curves.len(), 3);
+    assert_eq!(doc.next_id, 3);
+    assert_eq!(doc.imported.len(), 1);
+
+    // The first curve used every default of that version.
+    let first = vector(&doc.curves[0].mode);
+    assert!(doc.curves[0].closed);
+    assert_eq!(doc.curves[0].points.len(), 16);
+    assert_eq!(first.exemplar, ExemplarRef::Builtin("lace".into()));
+    assert_eq!(first.settings, Settings::default());
+
+    // The second set everything by hand.
+    let second = vector(&doc.curves[1].mode);
+    assert_eq!(second.exemplar, ExemplarRef::Imported("beads".into()));
+    let s = &second.settings;
+    assert_eq!((s.components, s.holes, s.closed_pattern), (Target::Exactly(1), Target::Exactly(0), false));
+    assert_eq!((s.band_mm, s.variety, s.min_portal_mm, s.thickness_mm, s.seed), (8.0, 0.0, 0.2, 1.5, 7));
+    assert_eq!(s.slicing, SlicingMode::Uniform { cuts: 6 });
+    assert!(doc.exemplar(&second.exemplar).is_ok(), "the embedded exemplar loads");
+
+    let third = vector(&doc.curves[2].mode);
+    assert_eq!((third.exemplar.name(), third.settings.components), ("vine", Target::Any));
+}
+
+#[test]
+fn the_current_format_round_trips_and_newer_ones_are_refused() {
+    let doc = Document::from_ron(&std::fs::read_to_string(format_0_project()).unwrap()).unwrap();
+    let text = doc.to_ron().unwrap();
+    assert!(text.contains(&format!("format_version: {FORMAT_VERSION}")));
+    assert_eq!(Document::from_ron(&text).unwrap(), doc);
+    let newer = text.replace(&format!("format_version: {FORMAT_VERSION}"), "format_version: 99");
+    assert_eq!(Document::from_ron(&newer), Err(DocumentError::TooNew { found: 99 }));
+    assert!(matches!(Document::from_ron("(curves: 3)"), Err(DocumentError::NotAProject(_))));
+}
+
+#[test]
+fn the_app_opens_an_old_project_and_synthesizes_every_curve() {
+    let answers = vec![(FileKind::OpenProject, format_0_project())];
+    let mut harness = Harness::builder()
+        .with_size(egui::vec2(1280.0, 800.0))
+        .build_eframe(move |_| TraceryApp::with(Box::new(ScriptedDialogs { answers }), None));
+    harness.step();
+    harness.state_mut().queue(tracery::command::Command::Open);
+    harness.step();
+    settle(&mut harness);
+    let app = harness.state();
+    assert_eq!(app.doc.curves.len(), 3, "{:?}", app.message);
+    for curve in &app.doc.curves {
+        match app.job_state(curve.id) {
+            Some(JobState::Done(Ok(product))) => {
+                let s = &vector(&curve.mode).settings;
+                if let Target::Exactly(n) = s.components {
+                    assert_eq!(product.topology.components, n as usize, "curve {}", curve.id);
+                }
+                if let Target::Exactly(n) = s.holes {
+                    assert_eq!(product.topology.holes, n as usize, "curve {}", curve.id);
+                }
+            }
+            other => panic!("curve {}: {other:?}", curve.id),
+        }
+    }
+}
+
+#[test]
+fn the_command_line_and_the_app_share_their_defaults() {
+    use clap::Parser;
+    #[derive(Parser)]
+    struct Wrapper {
+        #[command(flatten)]
+        args: SynthArgs,
+    }
+    let parsed = Wrapper::parse_from(["synth", "--exemplar", "lace", "--along", "line:100"]).args;
+    assert_eq!(parsed.settings(), Settings::default());
+    let app = TraceryApp::with(Box::new(ScriptedDialogs::default()), None);
+    assert_eq!(vector(app.settings()).settings, parsed.settings(), "new curves in the app use the same defaults");
+    let flag_alone = Wrapper::parse_from(["synth", "--exemplar", "lace", "--along", "x:1", "--closed-pattern"]).args;
+    assert!(flag_alone.settings().closed_pattern);
+    let off = Wrapper::parse_from(["synth", "--exemplar", "l", "--along", "x:1", "--closed-pattern", "false"]).args;
+    assert!(!off.settings().closed_pattern);
+}
