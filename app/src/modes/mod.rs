@@ -4,8 +4,6 @@
 
 pub mod vector_brush;
 
-use std::sync::Arc;
-
 use egui::{Color32, Stroke};
 use tracery_core::Product;
 use tracery_core::control::{Control, MaybeCancelled};
@@ -129,6 +127,3 @@ impl Job for ModeJob {
         }
     }
 }
-
-/// The product of each curve, as the app keeps them.
-pub type Output = Arc<Product>;

@@ -104,10 +104,8 @@ impl Problem<'_> {
 
     fn report_progress(&self) {
         let done = self.work_done.fetch_add(1, Ordering::Relaxed) + 1;
-        if let Some(progress) = self.control.progress
-            && (done.is_multiple_of(16) || done == self.work_total)
-        {
-            progress((done as f32 / self.work_total.max(1) as f32).min(1.0));
+        if done.is_multiple_of(16) || done == self.work_total {
+            self.control.report(done as f32 / self.work_total.max(1) as f32);
         }
     }
 
@@ -392,9 +390,7 @@ pub(super) fn search_all(
             }
         };
         if let Some(found) = found {
-            if let Some(progress) = control.progress {
-                progress(1.0);
-            }
+            control.report(1.0);
             return Ok(Some(finish(set, options, found, tolerance, created.load(Ordering::Relaxed))));
         }
     }
