@@ -76,7 +76,9 @@ pub struct ExemplarPicture {
 struct Smoothed {
     points: Vec<[f64; 2]>,
     closed: bool,
-    curve: Option<Curve>,
+    /// Shared with the jobs made from it, so that asking the worker again
+    /// each frame neither copies nor compares the dense polyline.
+    curve: Option<Arc<Curve>>,
 }
 
 /// Everything derived from the document that is kept to avoid recomputing it.
@@ -121,14 +123,15 @@ impl Caches {
         for item in curves {
             let fresh = self.smoothed.get(&item.id).is_some_and(|s| s.points == item.points && s.closed == item.closed);
             if !fresh {
-                let smoothed = Smoothed { points: item.points.clone(), closed: item.closed, curve: item.curve() };
+                let smoothed =
+                    Smoothed { points: item.points.clone(), closed: item.closed, curve: item.curve().map(Arc::new) };
                 self.smoothed.insert(item.id, smoothed);
             }
         }
     }
 
     /// The smoothed curve of item `id`, if it is long enough to be one.
-    pub fn smoothed(&self, id: u64) -> Option<&Curve> {
+    pub fn smoothed(&self, id: u64) -> Option<&Arc<Curve>> {
         self.smoothed.get(&id).and_then(|s| s.curve.as_ref())
     }
 }

@@ -4,6 +4,8 @@
 
 pub mod vector_brush;
 
+use std::sync::Arc;
+
 use egui::{Color32, Stroke};
 use tracery_core::Product;
 use tracery_core::control::{Control, MaybeCancelled};
@@ -77,7 +79,7 @@ pub trait ModeUi: Sync {
     /// The job that computes a curve's pattern.
     fn job(
         &self,
-        curve: &Curve,
+        curve: &Arc<Curve>,
         settings: &ModeSettings,
         doc: &Document,
         caches: &mut Caches,

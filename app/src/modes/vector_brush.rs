@@ -23,8 +23,8 @@ pub struct VectorBrushUi;
 /// A vector-brush synthesis along one curve.
 #[derive(Clone, Debug)]
 pub struct VectorBrushJob {
-    /// The smoothed curve, mm.
-    pub curve: Curve,
+    /// The smoothed curve, mm (shared with the app's cache).
+    pub curve: Arc<Curve>,
     /// The exemplar.
     pub exemplar: Arc<Exemplar>,
     /// The settings.
@@ -33,8 +33,8 @@ pub struct VectorBrushJob {
 
 impl PartialEq for VectorBrushJob {
     fn eq(&self, other: &Self) -> bool {
-        // Exemplars are immutable once loaded: the same pointer is the same exemplar.
-        self.curve == other.curve
+        // Curves and exemplars are immutable once made: the same pointer is the same value.
+        (Arc::ptr_eq(&self.curve, &other.curve) || self.curve == other.curve)
             && self.settings == other.settings
             && (Arc::ptr_eq(&self.exemplar, &other.exemplar) || self.exemplar == other.exemplar)
     }
@@ -43,7 +43,7 @@ impl PartialEq for VectorBrushJob {
 impl VectorBrushJob {
     /// Runs the vector brush.
     pub fn run(&self, control: &Control) -> Result<Product, SynthesisError> {
-        make_product(&self.exemplar, &Along::Curve(self.curve.clone()), &self.settings, control)
+        make_product(&self.exemplar, &Along::Curve(Curve::clone(&self.curve)), &self.settings, control)
     }
 }
 
@@ -123,7 +123,7 @@ impl ModeUi for VectorBrushUi {
 
     fn job(
         &self,
-        curve: &Curve,
+        curve: &Arc<Curve>,
         settings: &ModeSettings,
         doc: &Document,
         caches: &mut Caches,
