@@ -76,17 +76,12 @@ fn every_mode_settings() {
     for mode in REGISTRY {
         let name = format!("mode_{}", mode.name().to_lowercase().replace(' ', "_"));
         let mut settings = mode.default_settings();
-        let mut harness = Harness::builder().with_size(egui::vec2(280.0, 620.0)).wgpu().build_ui_state(
-            move |ui: &mut egui::Ui, app: &mut TraceryApp| {
-                let mut commands = Vec::new();
-                let doc = app.doc.clone();
-                let mut env = ModeEnv { doc: &doc, caches: app.caches_mut(), commands: &mut commands };
-                mode.settings_ui(ui, &mut settings, &mut env);
-            },
-            app(),
-        );
-        harness.run();
-        harness.snapshot_options(&name, &options());
+        panel_snapshot(&name, egui::vec2(280.0, 620.0), move |app, ui| {
+            let mut commands = Vec::new();
+            let doc = app.doc.clone();
+            let mut env = ModeEnv { doc: &doc, caches: app.caches_mut(), commands: &mut commands };
+            mode.settings_ui(ui, &mut settings, &mut env);
+        });
     }
 }
 
