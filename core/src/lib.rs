@@ -28,6 +28,7 @@ pub mod export;
 pub mod geom;
 pub mod mesh;
 pub mod product;
+pub mod quality;
 pub mod report;
 pub mod vector_brush;
 

@@ -5,22 +5,45 @@ use tracery_core::control::Control;
 use tracery_core::curve::{Curve, map_along, planar_topology};
 use tracery_core::geom::count_topology;
 use tracery_core::mesh::extrude;
+use tracery_core::quality::max_distance_from;
 use tracery_core::vector_brush::{
-    CurveKind, PieceSet, Settings, SliceOptions, SolveOptions, builtin, position_offsets, solve, stitch, synthesize,
+    BAND_MARGIN, CurveKind, PieceSet, Settings, SliceOptions, SolveOptions, builtin, position_offsets, solve,
+    spread_offsets, stitch, synthesize,
 };
 
 #[test]
-fn offsets_keep_open_ends_on_the_axis_and_follow_alignments() {
+fn solver_offsets_keep_every_piece_in_the_band() {
+    // Tilted drifts by a step at every jump back in the exemplar: unbounded,
+    // the offsets walk away from the axis.
     let exemplar = builtin("tilted").unwrap();
     let set = PieceSet::new(&exemplar, &SliceOptions::default()).unwrap();
-    let solution = solve(&set, &SolveOptions::new(4.0 * exemplar.width()), &Control::default()).unwrap();
-    let offsets = position_offsets(&set, &solution.pieces, CurveKind::Open);
-    assert_eq!(offsets[0], 0.0);
-    assert_eq!(*offsets.last().unwrap(), 0.0);
-    // The accumulated alignments drift; the least-squares offsets stay closer to the axis.
-    let drift = solution.offsets.iter().fold(0.0f64, |m, o| m.max(o.abs()));
-    let kept = offsets.iter().fold(0.0f64, |m, o| m.max(o.abs()));
-    assert!(kept <= drift + 1e-9, "{kept} vs {drift}");
+    let mut options = SolveOptions::new(6.0 * exemplar.width());
+    let free = solve(&set, &options, &Control::default()).unwrap();
+    options.band_height = exemplar.height();
+    let bounded = solve(&set, &options, &Control::default()).unwrap();
+    let half = 0.5 * exemplar.height() * (1.0 + BAND_MARGIN);
+    let reach = |s: &tracery_core::vector_brush::Solution| {
+        s.pieces.iter().zip(&s.offsets).map(|(&p, d)| d.abs() + set.pieces[p].extent()).fold(0.0, f64::max)
+    };
+    assert!(reach(&free) > half, "the unbounded search should drift: {}", reach(&free));
+    assert!(reach(&bounded) <= half + 1e-6, "{} > {half}", reach(&bounded));
+    // On an open curve the stitched offsets are the solver's own.
+    assert_eq!(spread_offsets(&set, &bounded.pieces, &bounded.offsets, CurveKind::Open), bounded.offsets);
+}
+
+#[test]
+fn synthesized_geometry_stays_within_half_the_band_plus_five_percent() {
+    let curves = [Curve::line(160.0).unwrap(), Curve::circle(35.0).unwrap(), Curve::wave(160.0).unwrap()];
+    for name in ["tilted", "lace", "vine", "filigree"] {
+        let exemplar = builtin(name).unwrap();
+        for curve in &curves {
+            let settings = Settings::default();
+            let s = synthesize(&exemplar, curve, &settings, &Control::default()).unwrap();
+            // Measured on the final planar geometry, against the curve itself.
+            let drift = max_distance_from(&s.planar.region, curve);
+            assert!(drift <= 0.5 * settings.band_mm * 1.05, "{name}: {drift} mm from the curve");
+        }
+    }
 }
 
 #[test]

@@ -5,8 +5,8 @@ use std::sync::atomic::{AtomicBool, Ordering};
 
 use tracery_core::control::Control;
 use tracery_core::vector_brush::{
-    BUILTIN_NAMES, CurveKind, Exemplar, LengthGrid, LoadOptions, PieceSet, SliceOptions, SlicingMode, SolveError,
-    SolveOptions, Target, TopologyDescriptor, Unmet, builtin, solve, tolerance_levels,
+    BAND_MARGIN, BUILTIN_NAMES, CurveKind, Exemplar, LengthGrid, LoadOptions, PieceSet, SliceOptions, SlicingMode,
+    Solution, SolveError, SolveOptions, Target, TopologyDescriptor, Unmet, builtin, solve, tolerance_levels,
 };
 
 /// The best objective over every piece sequence, by brute force, with the
@@ -282,22 +282,25 @@ fn variety_lowers_autocorrelation_and_seeds_vary_the_result() {
 
 #[test]
 fn band_height_bounds_the_accumulated_offsets() {
-    let exemplar = builtin("vine").unwrap();
-    let set = PieceSet::new(&exemplar, &SliceOptions::default()).unwrap();
-    let mut options = SolveOptions::new(5.0 * exemplar.width());
-    let free = solve(&set, &options, &Control::default()).unwrap();
-    let drift = free.offsets.iter().fold(0.0f64, |m, o| m.max(o.abs()));
-    assert!(drift > 0.0);
-    options.band_height = drift; // half of the free drift on each side
-    let solution = solve(&set, &options, &Control::default()).unwrap();
-    assert!(solution.offsets.iter().all(|o| o.abs() <= 0.5 * drift + 1e-6), "{:?}", solution.offsets);
-
-    // A tilted exemplar climbs with every jump back; a band too narrow for
-    // that says so instead of blaming the topology targets.
+    // A tilted exemplar climbs with every jump back in it.
     let tilted = builtin("tilted").unwrap();
     let set = PieceSet::new(&tilted, &SliceOptions::default()).unwrap();
     let mut options = SolveOptions::new(5.0 * tilted.width());
-    options.band_height = 0.5 * tilted.height();
+    let free = solve(&set, &options, &Control::default()).unwrap();
+    let reach = |s: &Solution| {
+        s.pieces.iter().zip(&s.offsets).map(|(&p, d)| d.abs() + set.pieces[p].extent()).fold(0.0, f64::max)
+    };
+    assert!(reach(&free) > 0.75 * tilted.height(), "{}", reach(&free));
+    // With the band, every piece stays in it (held back at the edge where
+    // the alignment would take it out, paying for the mismatch).
+    options.band_height = tilted.height();
+    let bounded = solve(&set, &options, &Control::default()).unwrap();
+    assert!(reach(&bounded) <= 0.5 * tilted.height() * (1.0 + BAND_MARGIN) + 1e-6, "{}", reach(&bounded));
+    assert!(bounded.cost >= free.cost - 1e-9);
+
+    // A band far narrower than the pieces' own steps says so instead of
+    // blaming the topology targets.
+    options.band_height = 0.05 * tilted.height();
     let error = solve(&set, &options, &Control::default()).unwrap_err();
     assert_eq!(error, SolveError::NoSolution(Unmet::Band));
 }

@@ -1,5 +1,6 @@
 //! Where a pattern goes, as the command line's `--along` says it: a curve
-//! (`line:`, `circle:`, `wave:`, `svg:`) or a rectangle (`rect:WxH`).
+//! (`line:`, `circle:`, `wave:`, the frames `square:` (side), `hexagon:` and
+//! `star:` (radius), `svg:`) or a rectangle (`rect:WxH`).
 
 use std::path::{Path, PathBuf};
 
@@ -27,10 +28,12 @@ pub enum Along {
 #[non_exhaustive]
 pub enum AlongError {
     /// Not `KIND:VALUE`.
-    #[error("curve '{0}' must look like KIND:VALUE (line:120, circle:25, wave:120, rect:80x50 or svg:FILE.svg)")]
+    #[error(
+        "curve '{0}' must look like KIND:VALUE (line:120, circle:25, wave:120, square:60, hexagon:30, star:40, rect:80x50 or svg:FILE.svg)"
+    )]
     Form(String),
     /// An unknown kind.
-    #[error("unknown curve kind '{0}': use line, circle, wave, rect or svg")]
+    #[error("unknown curve kind '{0}': use line, circle, wave, square, hexagon, star, rect or svg")]
     Kind(String),
     /// A size that is not a positive number.
     #[error("{what} must be a positive number of millimetres, not '{text}'")]
@@ -90,6 +93,11 @@ impl Along {
             "line" => Curve::line(positive("the line length", value)?)?,
             "circle" => Curve::circle(positive("the circle radius", value)?)?,
             "wave" => Curve::wave(positive("the wave length", value)?)?,
+            "square" => {
+                Curve::regular_polygon(4, positive("the square's side", value)? * std::f64::consts::FRAC_1_SQRT_2)?
+            }
+            "hexagon" => Curve::regular_polygon(6, positive("the hexagon's radius", value)?)?,
+            "star" => Curve::star(5, positive("the star's radius", value)?)?,
             "rect" => {
                 let (w, h) = value.split_once(['x', 'X']).ok_or_else(|| AlongError::Rectangle(value.to_string()))?;
                 return Ok(Along::Rectangle {

@@ -146,6 +146,52 @@ impl Curve {
         Curve::from_polyline(&pts, false)
     }
 
+    /// A closed polygon through `corners`, counter-clockwise, with sharp corners.
+    fn frame(corners: Vec<DVec2>) -> Result<Curve, CurveError> {
+        Curve::from_polyline(&corners, true)
+    }
+
+    /// A regular polygon with `sides` sides (at least 3) inscribed in a circle
+    /// of `radius` around the origin, one side at the bottom: a square or
+    /// hexagonal picture frame.
+    ///
+    /// ```
+    /// use tracery_core::curve::Curve;
+    /// let square = Curve::regular_polygon(4, 10.0).unwrap();
+    /// assert!((square.length() - 4.0 * 10.0 * 2f64.sqrt()).abs() < 1e-9);
+    /// ```
+    pub fn regular_polygon(sides: usize, radius: f64) -> Result<Curve, CurveError> {
+        if sides < 3 {
+            return Err(CurveError::TooShort);
+        }
+        let start = -std::f64::consts::FRAC_PI_2 - std::f64::consts::PI / sides as f64;
+        Curve::frame(
+            (0..sides)
+                .map(|i| {
+                    let a = start + std::f64::consts::TAU * i as f64 / sides as f64;
+                    DVec2::new(radius * a.cos(), radius * a.sin())
+                })
+                .collect(),
+        )
+    }
+
+    /// A star with `points` tips on a circle of `radius`, its inner corners at
+    /// half the radius.
+    pub fn star(points: usize, radius: f64) -> Result<Curve, CurveError> {
+        if points < 3 {
+            return Err(CurveError::TooShort);
+        }
+        Curve::frame(
+            (0..2 * points)
+                .map(|i| {
+                    let a = std::f64::consts::FRAC_PI_2 + std::f64::consts::PI * i as f64 / points as f64;
+                    let r = if i % 2 == 0 { radius } else { 0.5 * radius };
+                    DVec2::new(r * a.cos(), r * a.sin())
+                })
+                .collect(),
+        )
+    }
+
     /// The same curve with points every `spacing` units of arc length.
     pub fn resampled(&self, spacing: f64) -> Curve {
         let count = ((self.length() / spacing.max(1e-9)).ceil() as usize).clamp(2, 200_000);

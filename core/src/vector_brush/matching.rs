@@ -5,6 +5,12 @@ use super::Piece;
 /// Weight of the endpoint-position term against the tangent term (the paper's α).
 pub const MATCH_WEIGHT: f64 = 0.8;
 
+/// What a break costs: a seam without portals, where two pieces sit side by
+/// side and nothing joins them. As much as a poor seam, so that a pattern
+/// breaks up only where its targets ask for separate parts (or nothing else
+/// fits), and end caps do not line up along the curve for free.
+pub const BREAK_COST: f64 = 1.0;
+
 /// How well the right side of one piece fits the left side of another.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct PairCost {
@@ -30,8 +36,9 @@ impl PairCost {
         let yb: Vec<f64> = b.left_endpoints().collect();
         let m = ya.len();
         if m == 0 {
-            // Nothing to join: the pieces just sit side by side.
-            return Some(PairCost { d_match: 0.0, d_tangent: 0.0, tau: 0.0, cost: 0.0 });
+            // Nothing to join: the pieces just sit side by side (stitching
+            // keeps them apart, so the break is a real one).
+            return Some(PairCost { d_match: 0.0, d_tangent: 0.0, tau: 0.0, cost: BREAK_COST });
         }
         let tau = ya.iter().zip(&yb).map(|(ra, lb)| ra - lb).sum::<f64>() / m as f64;
         let scale = exemplar_height.max(f64::MIN_POSITIVE);

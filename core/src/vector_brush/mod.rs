@@ -40,13 +40,15 @@ pub use builtin::{BUILTIN_NAMES, builtin, builtin_svg};
 pub use descriptor::{LoopTopology, PortalIds, TopologyDescriptor};
 pub use error::{ExemplarError, SliceError, SolveError, Unmet};
 pub use exemplar::{Exemplar, LoadOptions};
-pub use matching::{MATCH_WEIGHT, PairCost};
+pub use matching::{BREAK_COST, MATCH_WEIGHT, PairCost};
 pub use piece::{Piece, PieceSet};
 pub use pipeline::{Synthesis, SynthesisError, synthesize, synthesize_rectangle};
 pub use portal::{Portal, portals_at};
-pub use positioning::position_offsets;
+pub use positioning::{position_offsets, spread_offsets};
 pub use product::make_product;
 pub use settings::{InvalidSetting, Settings};
 pub use slicing::{MAX_PORTALS, SliceOptions, SlicingMode, cut_positions, topology_events};
-pub use solver::{CurveKind, LengthGrid, STATE_BYTES, Solution, SolveOptions, Target, solve, tolerance_levels};
+pub use solver::{
+    BAND_MARGIN, CurveKind, LengthGrid, STATE_BYTES, Solution, SolveOptions, Target, solve, tolerance_levels,
+};
 pub use stitching::{BandPattern, stitch};

@@ -30,6 +30,11 @@ impl Piece {
         self.u_start + self.width
     }
 
+    /// How far the piece's material reaches from the band's axis (`v = 0`).
+    pub fn extent(&self) -> f64 {
+        self.region.rings().flatten().map(|p| p.y.abs()).fold(0.0, f64::max)
+    }
+
     /// Portal endpoint heights on the left side, top to bottom (two per portal).
     pub fn left_endpoints(&self) -> impl Iterator<Item = f64> + '_ {
         self.left.iter().flat_map(|p| [p.top, p.bottom])
@@ -53,6 +58,34 @@ pub struct PieceSet {
     /// Width of the exemplar.
     pub exemplar_width: f64,
     pairs: Vec<Option<PairCost>>,
+    /// For each piece, the index of the first piece with the same shape.
+    shape_classes: Vec<usize>,
+}
+
+/// Two pieces have the same shape when their outlines, widths and portals
+/// agree within this fraction of the exemplar's height once moved to the same `u`.
+pub const SHAPE_TOLERANCE: f64 = 1e-4;
+
+/// A piece's geometry moved to `u = 0` and rounded to the shape tolerance:
+/// equal keys mean the same shape, whatever the vertex order of the rings.
+fn shape_key(piece: &Piece, step: f64) -> Vec<(i64, i64)> {
+    let round = |p: DVec2| (((p.x - piece.u_start) / step).round() as i64, (p.y / step).round() as i64);
+    let mut key: Vec<(i64, i64)> = piece.region.rings().flatten().map(|&p| round(p)).collect();
+    key.sort_unstable();
+    key.push((i64::MIN, (piece.width / step).round() as i64));
+    for p in piece.left.iter().chain(&piece.right) {
+        key.push((i64::MIN + 1, (p.top / step).round() as i64));
+        key.push((i64::MIN + 2, (p.bottom / step).round() as i64));
+    }
+    key.push((i64::MIN + 3, piece.left.len() as i64 * 1000 + piece.right.len() as i64));
+    key
+}
+
+/// Groups pieces of the same shape (see [`SHAPE_TOLERANCE`]).
+fn shape_classes(pieces: &[Piece], exemplar_height: f64) -> Vec<usize> {
+    let step = SHAPE_TOLERANCE * exemplar_height.max(f64::MIN_POSITIVE);
+    let mut first: rustc_hash::FxHashMap<Vec<(i64, i64)>, usize> = Default::default();
+    pieces.iter().map(|p| *first.entry(shape_key(p, step)).or_insert(p.index)).collect()
 }
 
 /// Finds which polygon of `region` a portal belongs to, probing just inside
@@ -124,7 +157,22 @@ impl PieceSet {
                 pairs.push(PairCost::between(a, b, exemplar_height));
             }
         }
-        Ok(PieceSet { pieces, cuts, exemplar_height, exemplar_width: width, pairs })
+        let shape_classes = shape_classes(&pieces, exemplar_height);
+        Ok(PieceSet { pieces, cuts, exemplar_height, exemplar_width: width, pairs, shape_classes })
+    }
+
+    /// For each piece, the index of the first piece of the same shape: pieces
+    /// with equal classes look the same wherever they are placed.
+    ///
+    /// ```
+    /// use tracery_core::vector_brush::{builtin, PieceSet, SliceOptions};
+    /// let set = PieceSet::new(&builtin("lace").unwrap(), &SliceOptions::default()).unwrap();
+    /// let classes = set.shape_classes();
+    /// assert_eq!(classes.len(), set.len());
+    /// assert!(classes.iter().enumerate().all(|(i, &c)| c <= i));
+    /// ```
+    pub fn shape_classes(&self) -> &[usize] {
+        &self.shape_classes
     }
 
     /// Number of pieces.

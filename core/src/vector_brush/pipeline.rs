@@ -4,8 +4,8 @@
 use glam::DVec2;
 
 use super::{
-    BandPattern, CurveKind, Exemplar, ExemplarError, InvalidSetting, PieceSet, Settings, SliceError, SliceOptions,
-    Solution, SolveError, SolveOptions, position_offsets, stitch,
+    BAND_MARGIN, BandPattern, CurveKind, Exemplar, ExemplarError, InvalidSetting, PieceSet, Settings, SliceError,
+    SliceOptions, Solution, SolveError, SolveOptions, spread_offsets, stitch,
 };
 use crate::control::{Control, MaybeCancelled};
 use crate::curve::{Curve, CurveError, PlanarPattern, map_along, planar_topology};
@@ -118,11 +118,19 @@ fn synthesize_at_scale(
     options.closed_pattern = settings.closed_pattern && kind == CurveKind::Closed;
     options.variety = settings.variety;
     options.seed = settings.seed;
+    options.band_height = settings.band_mm / scale;
     let solution = timings.time("solve", || super::solve(&set, &options, control))?;
 
     let (band, planar, topology) = timings.time("geometry", || {
-        let offsets = position_offsets(&set, &solution.pieces, kind);
-        let band = stitch(&set, &solution.pieces, &offsets, curve.length() / scale, kind);
+        let offsets = spread_offsets(&set, &solution.pieces, &solution.offsets, kind);
+        let mut band = stitch(&set, &solution.pieces, &offsets, curve.length() / scale, kind);
+        // The solver kept every piece within the band and stitching moves
+        // endpoints by half their mismatch; what still pokes out (a loop's
+        // closing error spread over its seams) is pressed back in, so the
+        // pattern never strays from the curve. Never below the exemplar's
+        // own half-height: a person who scaled it past the band asked for that.
+        let limit = (0.5 * options.band_height).max(0.5 * exemplar.height()) * (1.0 + BAND_MARGIN);
+        band.fit_within(limit);
         let planar = map_along(&band.region, scale, curve);
         let topology = planar_topology(&planar.region, curve);
         (band, planar, topology)

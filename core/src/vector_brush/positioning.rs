@@ -10,10 +10,13 @@ const AXIS_WEIGHT: f64 = 1e-3;
 /// Vertical offsets `δ` of the pieces of `sequence`, in exemplar units.
 ///
 /// Minimizes `Σ M_i (δ_i + τ_i − δ_{i+1})²` over the seams, `M_i` being the
-/// number of portal endpoints of seam `i` and `τ_i` its best alignment. On an
-/// open curve both ends sit on the axis (`δ_0 = δ_N = 0`); on a loop the seam
-/// from the last piece back to the first counts too and `δ_0 = 0`. The normal
-/// equations are tridiagonal and solved in linear time.
+/// number of portal endpoints of seam `i` and `τ_i` its best alignment. The
+/// first piece sits on the axis (`δ_0 = 0`), and so does every piece after a
+/// break (a seam without portals): these are the offsets the solver bounded
+/// to the band, so on an open curve each seam is aligned exactly. On a loop
+/// the seam from the last piece back to the first counts too, and what the
+/// loop does not close is spread over its seams. The normal equations are
+/// tridiagonal and solved in linear time.
 ///
 /// ```
 /// use tracery_core::vector_brush::{builtin, position_offsets, PieceSet, SliceOptions, CurveKind};
@@ -28,28 +31,40 @@ pub fn position_offsets(set: &PieceSet, sequence: &[usize], curve: CurveKind) ->
     if n < 2 {
         return vec![0.0; n];
     }
-    // Seams (i, i+1, weight, tau), the closing one included on loops.
-    let mut seams: Vec<(usize, usize, f64, f64)> = sequence
-        .windows(2)
-        .enumerate()
-        .map(|(i, w)| {
-            let pair = set.pair(w[0], w[1]);
-            (i, i + 1, pair.map_or(0.0, |_| 2.0 * set.pieces[w[0]].right.len() as f64), pair.map_or(0.0, |p| p.tau))
+    let steps: Vec<Option<f64>> = (0..n)
+        .map(|i| {
+            let (a, b) = (sequence[i], sequence[(i + 1) % n]);
+            let closing = i + 1 == n;
+            if closing && curve == CurveKind::Open {
+                return None;
+            }
+            set.pair(a, b).filter(|_| !set.pieces[a].right.is_empty()).map(|p| p.tau)
         })
         .collect();
-    if let Some(pair) = set.pair(sequence[n - 1], sequence[0]).filter(|_| curve == CurveKind::Closed) {
-        seams.push((n - 1, 0, 2.0 * set.pieces[sequence[n - 1]].right.len() as f64, pair.tau));
-    }
-    // Unknowns: δ_1 .. δ_{n-1} on loops, δ_1 .. δ_{n-2} on open curves.
-    let last = if curve == CurveKind::Closed { n - 1 } else { n - 2 };
+    least_squares_offsets(set, sequence, &steps)
+}
+
+/// Minimizes `Σ M_i (δ_i + step_i − δ_{i+1})²` over the seams with a step
+/// (`steps[i]` joins piece `i` to `i + 1`, the last one closing a loop),
+/// with `δ_0 = 0` and every piece after a break pinned at 0 too.
+fn least_squares_offsets(set: &PieceSet, sequence: &[usize], steps: &[Option<f64>]) -> Vec<f64> {
+    let n = sequence.len();
+    let seams: Vec<(usize, usize, f64, f64)> = steps
+        .iter()
+        .enumerate()
+        .filter_map(|(i, step)| step.map(|tau| (i, (i + 1) % n, 2.0 * set.pieces[sequence[i]].right.len() as f64, tau)))
+        .collect();
+    // Unknowns: δ_1 .. δ_{n-1}, except right after a break, pinned at 0 like δ_0.
+    let last = n - 1;
     let m = last;
     if m == 0 {
         return vec![0.0; n];
     }
+    let pinned: Vec<bool> = (0..n).map(|i| i == 0 || set.pieces[sequence[i - 1]].right.is_empty()).collect();
     let mut diag = vec![AXIS_WEIGHT; m];
     let mut off = vec![0.0; m.saturating_sub(1)];
     let mut rhs = vec![0.0; m];
-    let unknown = |i: usize| (1..=last).contains(&i).then(|| i - 1);
+    let unknown = |i: usize| (!pinned[i]).then(|| i - 1);
     // Each seam contributes w·(δ_a + τ − δ_b)² to the energy.
     for &(a, b, w, tau) in &seams {
         match (unknown(a), unknown(b)) {
@@ -77,6 +92,34 @@ pub fn position_offsets(set: &PieceSet, sequence: &[usize], curve: CurveKind) ->
         offsets[k + 1] = value;
     }
     offsets
+}
+
+/// The offsets to stitch `sequence` with, from the ones the solver chose
+/// (`solved`, which keeps every piece in the band): on an open curve they are
+/// used as they are; on a loop, what the loop does not close is spread over
+/// its seams by least squares, each seam keeping the step the solver gave it.
+///
+/// ```
+/// use tracery_core::vector_brush::{builtin, solve, spread_offsets, CurveKind, PieceSet, SliceOptions, SolveOptions};
+/// use tracery_core::control::Control;
+/// let set = PieceSet::new(&builtin("vine").unwrap(), &SliceOptions::default()).unwrap();
+/// let solution = solve(&set, &SolveOptions::new(3.0 * set.exemplar_width), &Control::default()).unwrap();
+/// let offsets = spread_offsets(&set, &solution.pieces, &solution.offsets, CurveKind::Open);
+/// assert_eq!(offsets, solution.offsets);
+/// ```
+pub fn spread_offsets(set: &PieceSet, sequence: &[usize], solved: &[f64], curve: CurveKind) -> Vec<f64> {
+    let n = sequence.len();
+    if curve == CurveKind::Open || n < 2 || solved.len() != n {
+        return solved.to_vec();
+    }
+    let steps: Vec<Option<f64>> = (0..n)
+        .map(|i| {
+            let (a, b) = (sequence[i], sequence[(i + 1) % n]);
+            let linked = !set.pieces[a].right.is_empty() && set.pair(a, b).is_some();
+            linked.then(|| if i + 1 < n { solved[i + 1] - solved[i] } else { set.pair(a, b).map_or(0.0, |p| p.tau) })
+        })
+        .collect();
+    least_squares_offsets(set, sequence, &steps)
 }
 
 /// Solves a symmetric positive definite tridiagonal system (Thomas algorithm).

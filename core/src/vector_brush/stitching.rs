@@ -38,6 +38,25 @@ pub struct BandPattern {
     pub curve: CurveKind,
 }
 
+impl BandPattern {
+    /// How far the pattern reaches from the axis `v = 0`.
+    pub fn extent(&self) -> f64 {
+        self.region.rings().flatten().map(|p| p.y.abs()).fold(0.0, f64::max)
+    }
+
+    /// Scales `v` down uniformly when the pattern reaches past `limit`, so it
+    /// stays within `±limit`. Returns the factor applied (1 when none was needed).
+    pub fn fit_within(&mut self, limit: f64) -> f64 {
+        let extent = self.extent();
+        if extent <= limit || extent <= 0.0 {
+            return 1.0;
+        }
+        let factor = limit / extent;
+        self.region = self.region.map_points(|p| DVec2::new(p.x, p.y * factor));
+        factor
+    }
+}
+
 /// A monotone cubic map through `(x_k, y_k)` with `x` increasing, continued
 /// with slope 1 beyond the ends (Fritsch–Carlson).
 struct MonotoneMap {
@@ -123,6 +142,12 @@ fn smoothstep(t: f64) -> f64 {
     let t = t.clamp(0.0, 1.0);
     t * t * (3.0 - 2.0 * t)
 }
+
+/// Smallest gap kept between two pieces at a break, as a fraction of the
+/// exemplar's height: material that reaches the exemplar's ends (a flat end
+/// face, a tip) would otherwise weld to its neighbour and join parts the
+/// plan keeps apart.
+pub const BREAK_GAP: f64 = 0.05;
 
 /// Largest slope change the bending is allowed, so that it stays gentle.
 const MAX_BEND: f64 = 1.5;
@@ -217,9 +242,23 @@ pub fn stitch(set: &PieceSet, sequence: &[usize], offsets: &[f64], length: f64, 
     let snap = 1e-6 * set.exemplar_width;
     let snap_v = 1e-6 * set.exemplar_height;
     let no_targets: Vec<f64> = Vec::new();
+    // At a break, a piece whose material comes closer to the seam than half
+    // the gap is squeezed along u, away from it.
+    let gap = BREAK_GAP * set.exemplar_height;
+    let is_break = |k: usize| match curve {
+        CurveKind::Open => k > 0 && k < n && joined(k).is_none(),
+        CurveKind::Closed => joined(if k == 0 { n } else { k }).is_none(),
+    };
     let mut polygons = Vec::new();
     for (i, piece) in pieces.iter().enumerate() {
-        let (u0, u1) = (seam_u[i], seam_u[i + 1]);
+        let (x_min, x_max) = piece
+            .region
+            .rings()
+            .flatten()
+            .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), p| (lo.min(p.x), hi.max(p.x)));
+        let left_gap = if is_break(i) { (0.5 * gap - (x_min - piece.u_start)).max(0.0) } else { 0.0 };
+        let right_gap = if is_break(i + 1) { (0.5 * gap - (piece.u_end() - x_max)).max(0.0) } else { 0.0 };
+        let (u0, u1) = (seam_u[i] + left_gap * stretch, seam_u[i + 1] - right_gap * stretch);
         let width = u1 - u0;
         let radius = 0.3 * width;
         let step = (piece.width / 12.0).min(set.exemplar_height / 24.0).max(1e-9);

@@ -93,9 +93,10 @@ pub struct SolveOptions {
     pub holes: Target,
     /// On loops, keep only patterns with a component that runs all around.
     pub closed_pattern: bool,
-    /// Height of the band, in exemplar units: partial solutions whose
-    /// accumulated vertical offset leaves `±band_height / 2` are dropped.
-    /// Infinite turns the limit off.
+    /// Height of the band, in exemplar units: a piece may be raised or
+    /// lowered (by the accumulated alignments `τ`) only as far as it stays
+    /// within `±band_height / 2`, give or take [`BAND_MARGIN`]. A seam without
+    /// portals starts a new chain back on the axis. Infinite turns the limit off.
     pub band_height: f64,
     /// Relative length tolerance ε / L (the paper's 0.05); widened when no
     /// solution meets it.
@@ -169,6 +170,11 @@ pub struct Solution {
     /// DP states created over all searches.
     pub states: usize,
 }
+
+/// How far past the band's edge, as a fraction of half the band, the solver
+/// lets a raised piece reach. Stitching moves portal endpoints by half their
+/// remaining mismatch, so this leaves room under the 5% the geometry allows.
+pub const BAND_MARGIN: f64 = 0.03;
 
 /// Bytes one DP state takes, with its share of the bucket maps and the
 /// variety history; used to turn the state cap into megabytes.

@@ -7,9 +7,9 @@ use std::sync::atomic::{AtomicUsize, Ordering};
 use rayon::prelude::*;
 
 use super::state::{Bucket, Interner, LengthGrid, NO_PARENT, PRUNED, State, UNKNOWN};
-use super::{CurveKind, STATE_BYTES, Solution, SolveOptions, Target, tolerance_levels};
+use super::{BAND_MARGIN, CurveKind, STATE_BYTES, Solution, SolveOptions, Target, tolerance_levels};
 use crate::control::{Control, StateCap};
-use crate::vector_brush::{Autocorrelation, PieceSet, Similarity, SolveError, TopologyDescriptor};
+use crate::vector_brush::{Autocorrelation, MATCH_WEIGHT, PieceSet, Similarity, SolveError, TopologyDescriptor};
 
 /// Everything one search needs that does not change while it runs.
 pub(super) struct Problem<'a> {
@@ -19,7 +19,15 @@ pub(super) struct Problem<'a> {
     steps: Vec<u32>,
     /// Pair costs, seed jitter excluded, `NaN` when incompatible.
     cost: Vec<f64>,
+    /// `δ` after joining `a` then `b` is `δ·keep[a·n+b] + τ[a·n+b]`: a break
+    /// (a seam without portals) starts a new chain back on the axis.
     tau: Vec<f64>,
+    keep: Vec<f32>,
+    /// How far each piece may be raised or lowered and stay in the band
+    /// (infinite without a band limit).
+    allowance: Vec<f32>,
+    /// Most a piece may be held back from its alignment to stay in the band.
+    max_hold: f32,
     jitter: f64,
     similarity: Similarity,
     states: &'a AtomicUsize,
@@ -76,6 +84,28 @@ impl Problem<'_> {
         };
         interner.joins[slot] = id;
         id
+    }
+
+    /// Where piece `b` goes when the alignments put it at `raw`: there, if it
+    /// stays in the band; otherwise held at the band's edge, paying for the
+    /// mismatch this leaves at the seam, up to [`MAX_HOLD`] of the band.
+    /// Returns the offset and the extra seam cost, or `None` when the piece
+    /// cannot be held in.
+    #[inline]
+    fn hold_in_band(&self, raw: f32, b: usize) -> Option<(f32, f64)> {
+        let allowance = self.allowance[b];
+        if raw.abs() <= allowance {
+            return Some((raw, 0.0));
+        }
+        let held = raw.abs() - allowance;
+        if held > self.max_hold {
+            return None;
+        }
+        // Holding every endpoint of the seam back by `held` adds exactly
+        // `(held / H)²` to the pair's mean squared mismatch, `τ` being its
+        // least-squares alignment.
+        let extra = f64::from(held) / self.set.exemplar_height.max(f64::MIN_POSITIVE);
+        Some((raw.clamp(-allowance, allowance), MATCH_WEIGHT * extra * extra))
     }
 
     fn seam_cost(&self, a: usize, b: usize, length: u32) -> f64 {
@@ -215,7 +245,6 @@ impl<'p> Search<'p> {
         let problem = self.problem;
         let n = problem.n();
         let max_len = self.window.1;
-        let half_band = 0.5 * problem.options.band_height;
         for &s in self.starts {
             let length = problem.steps[s];
             let d = problem.clamp(&problem.set.pieces[s].descriptor);
@@ -245,16 +274,16 @@ impl<'p> Search<'p> {
                     if next_length > max_len {
                         continue;
                     }
-                    let delta = state.delta + problem.tau[a * n + b] as f32;
-                    if f64::from(delta.abs()) > half_band {
+                    let raw = state.delta * problem.keep[a * n + b] + problem.tau[a * n + b] as f32;
+                    let Some((delta, held_back)) = problem.hold_in_band(raw, b) else {
                         continue;
-                    }
+                    };
                     let descriptor = problem.join(&mut self.interner, state.descriptor, b);
                     if descriptor == PRUNED {
                         continue;
                     }
                     let next = State {
-                        cost: state.cost + problem.seam_cost(a, b, length),
+                        cost: state.cost + problem.seam_cost(a, b, length) + held_back,
                         parent: index,
                         descriptor,
                         delta,
@@ -284,11 +313,21 @@ impl<'p> Search<'p> {
             // One search per start piece: its only start closes the loop.
             let s = self.starts[0];
             let closing = problem.cost[a * problem.n() + s];
-            let delta = state.delta + problem.tau[a * problem.n() + s] as f32;
-            if closing.is_nan() || f64::from(delta.abs()) > 0.5 * options.band_height {
+            let seam = a * problem.n() + s;
+            if closing.is_nan() {
+                return;
+            }
+            // The loop closes onto the first piece, on the axis: what the
+            // offsets do not close is spread over the seams afterwards.
+            let raw = state.delta * problem.keep[seam] + problem.tau[seam] as f32;
+            if raw.abs() > problem.max_hold {
                 return;
             }
             total += closing;
+            if options.band_height.is_finite() {
+                let unclosed = f64::from(raw) / problem.set.exemplar_height.max(f64::MIN_POSITIVE);
+                total += MATCH_WEIGHT * unclosed * unclosed;
+            }
         }
         let Some(t) = problem.finished(&self.interner.list[state.descriptor as usize]) else {
             return;
@@ -320,6 +359,23 @@ impl<'p> Search<'p> {
     }
 }
 
+/// Room the band leaves a piece that reaches `extent` from its axis: how far
+/// it may be raised or lowered before it pokes out of the band by more than
+/// [`BAND_MARGIN`]. Never quite zero, so that a piece as tall as the band can
+/// still sit on the axis despite rounding.
+pub(super) fn band_allowance(band_height: f64, extent: f64) -> f64 {
+    if !band_height.is_finite() {
+        return f64::INFINITY;
+    }
+    let half = 0.5 * band_height;
+    (half * (1.0 + BAND_MARGIN) - extent).max(0.02 * half)
+}
+
+/// Most a piece may be held back from its alignment at one seam to stay in
+/// the band, as a fraction of the band: stitching bends the pieces to close
+/// the mismatch, and beyond this the bend would show.
+pub const MAX_HOLD: f64 = 0.2;
+
 /// Runs the searches for growing tolerances until one finds a solution.
 pub(super) fn search_all(
     set: &PieceSet,
@@ -331,11 +387,15 @@ pub(super) fn search_all(
     let steps: Vec<u32> = set.pieces.iter().map(|p| grid.steps(p.width)).collect();
     let mut cost = vec![f64::NAN; n * n];
     let mut tau = vec![0.0; n * n];
+    let mut keep = vec![1.0; n * n];
     for a in 0..n {
         for b in 0..n {
             if let Some(pair) = set.pair(a, b) {
                 cost[a * n + b] = pair.cost;
                 tau[a * n + b] = pair.tau;
+                if set.pieces[a].right.is_empty() {
+                    keep[a * n + b] = 0.0;
+                }
             }
         }
     }
@@ -358,6 +418,9 @@ pub(super) fn search_all(
         steps,
         cost,
         tau,
+        keep,
+        allowance: set.pieces.iter().map(|p| band_allowance(options.band_height, p.extent()) as f32).collect(),
+        max_hold: (MAX_HOLD * options.band_height).min(f64::from(f32::MAX)) as f32,
         jitter,
         similarity: Similarity::new(options.autocorrelation_sigma),
         states: &states,

@@ -1,0 +1,380 @@
+//! The corpus sweep: every ornament of a folder along several curves, with
+//! several topology targets, through the whole pipeline (synthesis and
+//! meshing), checked by measures the solver does not see.
+//!
+//! ```text
+//! cargo run -p tracery-core --release --example sweep -- \
+//!     [--corpus DIR] [--every K] [--curves line,circle,...] [--targets 1/any,...] \
+//!     [--csv OUT.csv] [--markdown OUT.md]
+//! ```
+//!
+//! Each run records whether it was answered, whether the topology counted on
+//! the final geometry equals the plan and the target, how far the geometry
+//! strays from the curve (in half bands), the near period and longest repeat
+//! of the shape classes along the pattern, the seam tangent jump, and the
+//! time of the whole pipeline. The summary prints one row per curve.
+
+use std::path::PathBuf;
+use std::time::Instant;
+
+use tracery_core::control::Control;
+use tracery_core::curve::{Along, Curve};
+use tracery_core::export::region_to_svg;
+use tracery_core::geom::Region;
+use tracery_core::mesh::extrude;
+use tracery_core::quality::{longest_repeat, max_distance_from, near_period, seam_kinks_deg};
+use tracery_core::vector_brush::{
+    Exemplar, LoadOptions, PieceSet, Settings, SliceOptions, SolveError, SynthesisError, Target, synthesize,
+};
+
+struct Args {
+    corpus: PathBuf,
+    every: usize,
+    curves: Vec<String>,
+    targets: Vec<(Target, Target)>,
+    csv: Option<PathBuf>,
+    markdown: Option<PathBuf>,
+    /// Where to write each answered pattern as SVG (for contact sheets).
+    svg_dir: Option<PathBuf>,
+    /// Where to write contact sheets: one PNG per curve, of the first target's answers.
+    sheets: Option<PathBuf>,
+    /// Only ornaments whose name contains this.
+    only: Option<String>,
+}
+
+const CURVES: [&str; 6] = ["line:200", "circle:40", "wave:200", "square:70", "hexagon:40", "star:45"];
+const TARGETS: [&str; 4] = ["1/any", "any/any", "1/0", "2/any"];
+
+fn target(text: &str) -> Target {
+    if text == "any" { Target::Any } else { Target::Exactly(text.parse().expect("a target is a number or 'any'")) }
+}
+
+fn parse_args() -> Args {
+    let mut args = Args {
+        corpus: PathBuf::from(concat!(env!("CARGO_MANIFEST_DIR"), "/../../shared/corpus/ornaments")),
+        every: 1,
+        curves: CURVES.iter().map(|s| s.to_string()).collect(),
+        targets: TARGETS.iter().map(|t| t.split_once('/').map(|(c, h)| (target(c), target(h))).unwrap()).collect(),
+        csv: None,
+        markdown: None,
+        svg_dir: None,
+        sheets: None,
+        only: None,
+    };
+    let mut it = std::env::args().skip(1);
+    while let Some(flag) = it.next() {
+        let value = it.next().unwrap_or_else(|| panic!("{flag} needs a value"));
+        match flag.as_str() {
+            "--corpus" => args.corpus = value.into(),
+            "--every" => args.every = value.parse().expect("--every K"),
+            "--curves" => {
+                args.curves = value
+                    .split(',')
+                    .map(|c| CURVES.iter().find(|k| k.starts_with(c)).map_or(c.to_string(), |k| k.to_string()))
+                    .collect()
+            }
+            "--targets" => {
+                args.targets =
+                    value.split(',').map(|t| t.split_once('/').map(|(c, h)| (target(c), target(h))).unwrap()).collect()
+            }
+            "--csv" => args.csv = Some(value.into()),
+            "--markdown" => args.markdown = Some(value.into()),
+            "--svg-dir" => args.svg_dir = Some(value.into()),
+            "--only" => args.only = Some(value),
+            "--sheets" => args.sheets = Some(value.into()),
+            _ => panic!("unknown flag {flag}"),
+        }
+    }
+    args
+}
+
+#[derive(Clone, Debug)]
+struct Run {
+    /// The pattern, kept for contact sheets.
+    region: Option<Region>,
+    ornament: String,
+    curve: String,
+    target: String,
+    /// ok, none (no solution), cap, mesh, error.
+    status: &'static str,
+    reason: String,
+    exact: bool,
+    drift: f64,
+    period: f64,
+    repeat: f64,
+    seam_deg: f64,
+    pieces: usize,
+    time_ms: f64,
+    states: usize,
+}
+
+fn text(t: Target) -> String {
+    match t {
+        Target::Exactly(n) => n.to_string(),
+        Target::Any => "any".into(),
+    }
+}
+
+fn run_one(
+    exemplar: &Exemplar,
+    spec: &str,
+    curve: &Curve,
+    targets: (Target, Target),
+    svg_dir: Option<&std::path::Path>,
+) -> Run {
+    let mut settings = Settings::default();
+    settings.components = targets.0;
+    settings.holes = targets.1;
+    settings.closed_pattern = curve.is_closed();
+    let mut run = Run {
+        region: None,
+        ornament: exemplar.name.clone(),
+        curve: spec.to_string(),
+        target: format!("{}/{}", text(targets.0), text(targets.1)),
+        status: "ok",
+        reason: String::new(),
+        exact: false,
+        drift: 0.0,
+        period: 1.0,
+        repeat: 0.0,
+        seam_deg: 0.0,
+        pieces: 0,
+        time_ms: 0.0,
+        states: 0,
+    };
+    let start = Instant::now();
+    let result = synthesize(exemplar, curve, &settings, &Control::default())
+        .and_then(|s| extrude(&s.planar.region, settings.thickness_mm).map(|m| (s, m)).map_err(Into::into));
+    run.time_ms = start.elapsed().as_secs_f64() * 1e3;
+    let (synthesis, mesh) = match result {
+        Ok(r) => r,
+        Err(e) => {
+            run.status = match &e {
+                SynthesisError::Solve(SolveError::TooManyStates { .. }) => "cap",
+                SynthesisError::Solve(SolveError::NoSolution(_)) => "none",
+                SynthesisError::Mesh(_) => "mesh",
+                _ => "error",
+            };
+            run.reason = e.to_string();
+            return run;
+        }
+    };
+    let s = &synthesis.solution;
+    if let Some(dir) = svg_dir {
+        let name = format!("{}_{}_{}.svg", run.ornament, spec.replace(':', ""), run.target.replace('/', "-"));
+        let _ = std::fs::write(dir.join(name), region_to_svg(&synthesis.planar.region));
+    }
+    run.states = s.states;
+    run.region = Some(synthesis.planar.region.clone());
+    run.pieces = s.pieces.len();
+    let counted = (synthesis.topology.components as u32, synthesis.topology.holes as u32);
+    let bodies = mesh.shell_count() as u32;
+    run.exact = counted == (s.components, s.holes)
+        && targets.0.accepts(counted.0)
+        && targets.1.accepts(counted.1)
+        && bodies == counted.0;
+    if !run.exact {
+        run.reason =
+            format!("planned {}c {}h, counted {}c {}h, {} bodies", s.components, s.holes, counted.0, counted.1, bodies);
+    }
+    run.drift = max_distance_from(&synthesis.planar.region, curve) / (0.5 * settings.band_mm);
+    // Shape classes along the pattern, from the same cut of the exemplar.
+    if let Ok(set) = PieceSet::new(exemplar, &SliceOptions::default()) {
+        let classes: Vec<usize> = s.pieces.iter().map(|&p| set.shape_classes()[p]).collect();
+        let n = classes.len().max(1) as f64;
+        run.period = near_period(&classes) as f64 / n;
+        run.repeat = longest_repeat(&classes) as f64 / n;
+    }
+    let band = &synthesis.band;
+    let tolerance = 1e-6 * band.length;
+    run.seam_deg = seam_kinks_deg(&band.region, &band.seams, tolerance).into_iter().fold(0.0, f64::max);
+    run
+}
+
+/// Draws `region` black on white, fitted into a `width` × `height` tile.
+fn render(region: &Region, width: u32, height: u32) -> tiny_skia::Pixmap {
+    let mut pixmap = tiny_skia::Pixmap::new(width, height).expect("tile size");
+    pixmap.fill(tiny_skia::Color::WHITE);
+    let Some(bounds) = region.bounds() else { return pixmap };
+    let margin = 4.0;
+    let scale =
+        ((f64::from(width) - 2.0 * margin) / bounds.width()).min((f64::from(height) - 2.0 * margin) / bounds.height());
+    let offset_x = 0.5 * (f64::from(width) - scale * bounds.width()) - scale * bounds.min.x;
+    let offset_y = 0.5 * (f64::from(height) + scale * bounds.height()) + scale * bounds.min.y;
+    let mut path = tiny_skia::PathBuilder::new();
+    for ring in region.rings() {
+        for (k, p) in ring.iter().enumerate() {
+            let (x, y) = ((offset_x + scale * p.x) as f32, (offset_y - scale * p.y) as f32);
+            if k == 0 { path.move_to(x, y) } else { path.line_to(x, y) }
+        }
+        path.close();
+    }
+    let Some(path) = path.finish() else { return pixmap };
+    let mut paint = tiny_skia::Paint::default();
+    paint.set_color(tiny_skia::Color::BLACK);
+    paint.anti_alias = true;
+    pixmap.fill_path(&path, &paint, tiny_skia::FillRule::EvenOdd, tiny_skia::Transform::identity(), None);
+    pixmap
+}
+
+/// One contact sheet per curve: the answered runs of one target, in a grid,
+/// with a list of what each tile is next to it.
+fn contact_sheets(runs: &[Run], curves: &[String], target: &str, dir: &std::path::Path) {
+    std::fs::create_dir_all(dir).expect("create the sheet folder");
+    for curve in curves {
+        let shown: Vec<&Run> =
+            runs.iter().filter(|r| &r.curve == curve && r.target == target && r.region.is_some()).take(48).collect();
+        if shown.is_empty() {
+            continue;
+        }
+        let closed = shown[0].region.as_ref().and_then(|r| r.bounds()).is_some_and(|b| b.height() > 0.3 * b.width());
+        let (tile_w, tile_h, columns) = if closed { (300, 300, 6) } else { (1000, 90, 2) };
+        let columns = columns.min(shown.len());
+        let rows = shown.len().div_ceil(columns) as u32;
+        let gap = 6;
+        let mut sheet = tiny_skia::Pixmap::new(columns as u32 * (tile_w + gap) + gap, rows * (tile_h + gap) + gap)
+            .expect("sheet size");
+        sheet.fill(tiny_skia::Color::from_rgba8(200, 200, 200, 255));
+        let mut index = String::new();
+        for (k, run) in shown.iter().enumerate() {
+            let tile = render(run.region.as_ref().expect("answered"), tile_w, tile_h);
+            let (col, row) = ((k % columns) as u32, (k / columns) as u32);
+            sheet.draw_pixmap(
+                (gap + col * (tile_w + gap)) as i32,
+                (gap + row * (tile_h + gap)) as i32,
+                tile.as_ref(),
+                &tiny_skia::PixmapPaint::default(),
+                tiny_skia::Transform::identity(),
+                None,
+            );
+            index += &format!(
+                "row {} col {}: {} ({} pieces, exact {})\n",
+                row + 1,
+                col + 1,
+                run.ornament,
+                run.pieces,
+                run.exact
+            );
+        }
+        let stem = curve.replace(':', "");
+        sheet.save_png(dir.join(format!("{stem}.png"))).expect("write the sheet");
+        std::fs::write(dir.join(format!("{stem}.txt")), index).expect("write the sheet index");
+    }
+}
+
+fn percentile(sorted: &[f64], q: f64) -> f64 {
+    if sorted.is_empty() {
+        return f64::NAN;
+    }
+    sorted[((sorted.len() - 1) as f64 * q).round() as usize]
+}
+
+fn summary(runs: &[Run], curves: &[String]) -> String {
+    let mut out = String::from(
+        "| curve | runs | answered | exact | none | cap | mesh | error | drift max | seam max ° | period < ⅓ | p50 ms | p95 ms | max ms |\n\
+         |---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n",
+    );
+    let mut rows: Vec<(String, Vec<&Run>)> =
+        curves.iter().map(|c| (c.clone(), runs.iter().filter(|r| &r.curve == c).collect::<Vec<_>>())).collect();
+    rows.push(("all".into(), runs.iter().collect()));
+    for (name, rs) in rows {
+        let answered: Vec<&&Run> = rs.iter().filter(|r| r.status == "ok").collect();
+        let count = |s: &str| rs.iter().filter(|r| r.status == s).count();
+        let mut times: Vec<f64> = rs.iter().map(|r| r.time_ms).collect();
+        times.sort_by(f64::total_cmp);
+        let short_period = answered.iter().filter(|r| r.pieces >= 6 && r.period < 1.0 / 3.0).count();
+        out += &format!(
+            "| {name} | {} | {} | {} | {} | {} | {} | {} | {:.2} | {:.1} | {} | {:.1} | {:.1} | {:.1} |\n",
+            rs.len(),
+            answered.len(),
+            answered.iter().filter(|r| r.exact).count(),
+            count("none"),
+            count("cap"),
+            count("mesh"),
+            count("error"),
+            answered.iter().map(|r| r.drift).fold(0.0, f64::max),
+            answered.iter().map(|r| r.seam_deg).fold(0.0, f64::max),
+            short_period,
+            percentile(&times, 0.5),
+            percentile(&times, 0.95),
+            times.last().copied().unwrap_or(f64::NAN),
+        );
+    }
+    out
+}
+
+fn main() {
+    let args = parse_args();
+    let mut files: Vec<PathBuf> = std::fs::read_dir(&args.corpus)
+        .unwrap_or_else(|e| panic!("cannot read {}: {e}", args.corpus.display()))
+        .filter_map(|e| e.ok().map(|e| e.path()))
+        .filter(|p| p.extension().is_some_and(|x| x == "svg"))
+        .collect();
+    files.sort();
+    files.retain(|f| {
+        args.only.as_ref().is_none_or(|o| f.file_stem().is_some_and(|s| s.to_string_lossy().contains(o.as_str())))
+    });
+    let files: Vec<PathBuf> = files.into_iter().step_by(args.every.max(1)).collect();
+    if let Some(dir) = &args.svg_dir {
+        std::fs::create_dir_all(dir).expect("create the SVG folder");
+    }
+    let curves: Vec<(String, Curve)> = args
+        .curves
+        .iter()
+        .map(|spec| match Along::parse(spec) {
+            Ok(Along::Curve(c)) => (spec.clone(), c),
+            other => panic!("{spec} is not a curve: {other:?}"),
+        })
+        .collect();
+    let mut runs = Vec::new();
+    let mut csv =
+        String::from("ornament,curve,target,status,exact,drift,period,repeat,seam_deg,pieces,time_ms,states,reason\n");
+    let started = Instant::now();
+    for file in &files {
+        let exemplar = match Exemplar::from_svg_file(file, &LoadOptions::default()) {
+            Ok(e) => e,
+            Err(e) => {
+                eprintln!("{}: not loaded: {e}", file.display());
+                continue;
+            }
+        };
+        for (spec, curve) in &curves {
+            for &t in &args.targets {
+                let r = run_one(&exemplar, spec, curve, t, args.svg_dir.as_deref());
+                csv += &format!(
+                    "{},{},{},{},{},{:.3},{:.3},{:.3},{:.2},{},{:.2},{},\"{}\"\n",
+                    r.ornament,
+                    r.curve,
+                    r.target,
+                    r.status,
+                    r.exact,
+                    r.drift,
+                    r.period,
+                    r.repeat,
+                    r.seam_deg,
+                    r.pieces,
+                    r.time_ms,
+                    r.states,
+                    r.reason.replace('"', "'")
+                );
+                if r.status != "ok" && r.status != "none" || r.status == "ok" && !r.exact {
+                    eprintln!("{} {} {}: {} {}", r.ornament, r.curve, r.target, r.status, r.reason);
+                }
+                runs.push(r);
+            }
+        }
+    }
+    let table = summary(&runs, &args.curves);
+    println!("{} ornaments, {} runs in {:.0} s\n", files.len(), runs.len(), started.elapsed().as_secs_f64());
+    println!("{table}");
+    if let Some(path) = args.csv {
+        std::fs::write(&path, csv).expect("write the CSV");
+    }
+    if let Some(dir) = &args.sheets {
+        let first = args.targets.first().map(|&(c, h)| format!("{}/{}", text(c), text(h))).unwrap_or_default();
+        contact_sheets(&runs, &args.curves, &first, dir);
+    }
+    if let Some(path) = args.markdown {
+        std::fs::write(&path, table).expect("write the table");
+    }
+}

@@ -1,0 +1,143 @@
+//! Measures of a result that people judge by eye, computed from the output
+//! alone: how periodic a sequence looks, how far geometry strays from its
+//! curve. The solver never optimizes these directly; tests and the corpus
+//! sweep use them to check it.
+
+use glam::DVec2;
+
+use crate::curve::Curve;
+use crate::geom::Region;
+
+/// Fraction of positions that must agree for a shift to count as a period.
+pub const PERIOD_AGREEMENT: f64 = 0.9;
+
+/// The shortest shift `p` under which `sequence` looks periodic: at least
+/// [`PERIOD_AGREEMENT`] of the positions `i` with `i + p < n` have
+/// `sequence[i] == sequence[i + p]`, over at least two positions. Returns the
+/// length of the sequence when no shift qualifies.
+///
+/// Unlike the solver's autocorrelation (a soft, windowed similarity of
+/// piece indices), this counts exact agreement of shape classes at every
+/// shift, so a cycle of period 13 is seen as readily as one of period 2.
+///
+/// ```
+/// use tracery_core::quality::near_period;
+/// assert_eq!(near_period(&[1, 2, 3, 1, 2, 3, 1, 2, 3]), 3);
+/// assert_eq!(near_period(&[1, 2, 3, 4, 5, 6]), 6);
+/// ```
+pub fn near_period(sequence: &[usize]) -> usize {
+    let n = sequence.len();
+    (1..n)
+        .find(|&p| {
+            let span = n - p;
+            if span < 2 {
+                return false;
+            }
+            let agree = (0..span).filter(|&i| sequence[i] == sequence[i + p]).count();
+            agree as f64 >= PERIOD_AGREEMENT * span as f64
+        })
+        .unwrap_or(n)
+}
+
+/// Length of the longest run of consecutive elements that occurs twice in
+/// `sequence` (the two occurrences may overlap).
+///
+/// ```
+/// use tracery_core::quality::longest_repeat;
+/// assert_eq!(longest_repeat(&[1, 2, 3, 9, 1, 2, 3]), 3);
+/// assert_eq!(longest_repeat(&[1, 1, 1, 1]), 3);
+/// assert_eq!(longest_repeat(&[1, 2, 3]), 0);
+/// ```
+pub fn longest_repeat(sequence: &[usize]) -> usize {
+    // Longest common prefix of every pair of suffixes, by dynamic programming
+    // over shifts: O(n²) time, O(1) memory, plenty for sequences of pieces.
+    let n = sequence.len();
+    let mut best = 0;
+    for shift in 1..n {
+        let mut run = 0;
+        for i in 0..n - shift {
+            if sequence[i] == sequence[i + shift] {
+                run += 1;
+                best = usize::max(best, run);
+            } else {
+                run = 0;
+            }
+        }
+    }
+    best
+}
+
+/// The largest distance from any vertex of `region` to `curve`, mm.
+///
+/// ```
+/// use glam::DVec2;
+/// use tracery_core::curve::Curve;
+/// use tracery_core::geom::{Polygon, Region};
+/// use tracery_core::quality::max_distance_from;
+/// let square = vec![DVec2::new(1.0, -2.0), DVec2::new(3.0, -2.0), DVec2::new(3.0, 4.0), DVec2::new(1.0, 4.0)];
+/// let region = Region::new(vec![Polygon { outer: square, holes: vec![] }]);
+/// assert!((max_distance_from(&region, &Curve::line(10.0).unwrap()) - 4.0).abs() < 1e-9);
+/// ```
+pub fn max_distance_from(region: &Region, curve: &Curve) -> f64 {
+    // Every vertex against every segment: a few million products for a
+    // large pattern, cheap next to synthesis, and with nothing to get wrong.
+    let points = curve.points();
+    let segments: Vec<(DVec2, DVec2)> = points.windows(2).map(|w| (w[0], w[1])).collect();
+    let distance = |p: DVec2| {
+        segments
+            .iter()
+            .map(|&(a, b)| {
+                let t = ((p - a).dot(b - a) / (b - a).length_squared().max(1e-300)).clamp(0.0, 1.0);
+                p.distance_squared(a.lerp(b, t))
+            })
+            .fold(f64::INFINITY, f64::min)
+            .sqrt()
+    };
+    region.rings().flatten().map(|&p| distance(p)).fold(0.0, f64::max)
+}
+
+/// The kink of the outline where it crosses each seam, degrees: at every
+/// vertex lying on a seam line `u = s` (band space) whose neighbours sit on
+/// either side of it, the turning angle there minus the mean turning of its
+/// two neighbours, so that a smoothly curving outline scores about zero and
+/// a corner scores its angle. Returns the largest kink per seam crossing.
+///
+/// ```
+/// use glam::DVec2;
+/// use tracery_core::geom::{Polygon, Region};
+/// use tracery_core::quality::seam_kinks_deg;
+/// // A roof: flat, then a 30° bend exactly on the seam at u = 2.
+/// let outer = vec![
+///     DVec2::new(0.0, 0.0), DVec2::new(4.0, 0.0), DVec2::new(4.0, 1.0 + 2.0 * 30f64.to_radians().tan()),
+///     DVec2::new(3.0, 1.0 + 30f64.to_radians().tan()), DVec2::new(2.0, 1.0), DVec2::new(1.0, 1.0), DVec2::new(0.0, 1.0),
+/// ];
+/// let region = Region::new(vec![Polygon { outer, holes: vec![] }]);
+/// let kinks = seam_kinks_deg(&region, &[2.0], 1e-9);
+/// assert_eq!(kinks.len(), 1);
+/// assert!((kinks[0] - 30.0).abs() < 1e-6);
+/// ```
+pub fn seam_kinks_deg(region: &Region, seams_u: &[f64], tolerance: f64) -> Vec<f64> {
+    let mut kinks = Vec::new();
+    let turn = |a: DVec2, b: DVec2, c: DVec2| {
+        let (d1, d2) = (b - a, c - b);
+        d1.perp_dot(d2).atan2(d1.dot(d2))
+    };
+    for ring in region.rings() {
+        let n = ring.len();
+        if n < 5 {
+            continue;
+        }
+        for i in 0..n {
+            let at = |k: isize| ring[(i as isize + k).rem_euclid(n as isize) as usize];
+            let (p, prev, next) = (at(0), at(-1), at(1));
+            let Some(&s) = seams_u.iter().find(|&&s| (p.x - s).abs() <= tolerance) else { continue };
+            if (prev.x - s) * (next.x - s) >= 0.0 {
+                continue;
+            }
+            let here = turn(prev, p, next);
+            let around = 0.5 * (turn(at(-2), prev, p) + turn(p, next, at(2)));
+            kinks.push((here - around).abs().to_degrees());
+        }
+    }
+    kinks
+}
