@@ -106,6 +106,8 @@ struct Run {
     pieces: usize,
     time_ms: f64,
     states: usize,
+    /// Milliseconds in analysis, solve, geometry and meshing.
+    stages: String,
 }
 
 fn text(t: Target) -> String {
@@ -141,6 +143,7 @@ fn run_one(
         pieces: 0,
         time_ms: 0.0,
         states: 0,
+        stages: String::new(),
     };
     let start = Instant::now();
     let result = synthesize(exemplar, curve, &settings, &Control::default())
@@ -165,6 +168,11 @@ fn run_one(
         let _ = std::fs::write(dir.join(name), region_to_svg(&synthesis.planar.region));
     }
     run.states = s.states;
+    run.stages = ["analysis", "solve", "geometry"]
+        .iter()
+        .map(|k| format!("{:.0}", synthesis.timings.stage_ms(k).unwrap_or(0.0)))
+        .collect::<Vec<_>>()
+        .join("/");
     run.region = Some(synthesis.planar.region.clone());
     run.pieces = s.pieces.len();
     let counted = (synthesis.topology.components as u32, synthesis.topology.holes as u32);
@@ -327,8 +335,9 @@ fn main() {
         })
         .collect();
     let mut runs = Vec::new();
-    let mut csv =
-        String::from("ornament,curve,target,status,exact,drift,period,repeat,seam_deg,pieces,time_ms,states,reason\n");
+    let mut csv = String::from(
+        "ornament,curve,target,status,exact,drift,period,repeat,seam_deg,pieces,time_ms,states,stages,reason\n",
+    );
     let started = Instant::now();
     for file in &files {
         let exemplar = match Exemplar::from_svg_file(file, &LoadOptions::default()) {
@@ -342,7 +351,7 @@ fn main() {
             for &t in &args.targets {
                 let r = run_one(&exemplar, spec, curve, t, args.svg_dir.as_deref());
                 csv += &format!(
-                    "{},{},{},{},{},{:.3},{:.3},{:.3},{:.2},{},{:.2},{},\"{}\"\n",
+                    "{},{},{},{},{},{:.3},{:.3},{:.3},{:.2},{},{:.2},{},{},\"{}\"\n",
                     r.ornament,
                     r.curve,
                     r.target,
@@ -355,6 +364,7 @@ fn main() {
                     r.pieces,
                     r.time_ms,
                     r.states,
+                    r.stages,
                     r.reason.replace('"', "'")
                 );
                 if r.status != "ok" && r.status != "none" || r.status == "ok" && !r.exact {

@@ -45,7 +45,8 @@ fn every_stage_keeps_its_invariants() {
                 };
                 checked += 1;
                 let offsets = position_offsets(&set, &solution.pieces, kind);
-                let band = stitch(&set, &solution.pieces, &offsets, curve.length() / scale, kind);
+                let band =
+                    stitch(&set, &solution.pieces, &offsets, curve.length() / scale, kind, 1e-3 * exemplar.height());
                 band.region.sanity_check().unwrap_or_else(|e| panic!("{context}: band: {e}"));
                 let planar = map_along(&band.region, scale, &curve);
                 planar.region.sanity_check().unwrap_or_else(|e| panic!("{context}: planar: {e}"));

@@ -3,7 +3,7 @@
 use glam::DVec2;
 
 use super::Curve;
-use crate::geom::{Polygon, Region, resample, union};
+use crate::geom::{Polygon, Region, refine_mapped, union};
 use crate::report::Warning;
 
 /// A pattern laid along a curve, in the plane, in millimetres.
@@ -20,6 +20,9 @@ pub struct PlanarPattern {
 /// Fraction of the local radius of curvature the inner half of the band may
 /// use before it is narrowed: beyond the radius the band folds over itself.
 const CURVATURE_MARGIN: f64 = 0.85;
+
+/// Largest distance between a mapped outline and its straight edges, mm.
+pub const MAPPING_TOLERANCE_MM: f64 = 0.005;
 
 /// Lays `band_region` (band space, exemplar units) along `curve` (millimetres), `scale`
 /// millimetres per exemplar unit. The band's `u` must run over the curve's length.
@@ -67,7 +70,7 @@ pub fn map_along(band_region: &Region, scale: f64, curve: &Curve) -> PlanarPatte
         let t = x - k as f64;
         factor[k] * (1.0 - t) + factor[k + 1] * t
     };
-    let step = (0.25 * half).min(length / 200.0).max(1e-3);
+    let step = (half).min(length / 50.0).max(1e-3);
     let closed = curve.is_closed();
     let place = |p: DVec2| {
         let mut u = p.x * scale;
@@ -79,11 +82,10 @@ pub fn map_along(band_region: &Region, scale: f64, curve: &Curve) -> PlanarPatte
         curve.map(u, p.y * scale * narrowing(u))
     };
     let mut mapped = Vec::new();
+    // Points are added where the curve bends an edge away from its chord.
+    let ring = |r: &Vec<DVec2>| refine_mapped(r, place, step / scale, MAPPING_TOLERANCE_MM);
     for polygon in &band_region.polygons {
-        let ring = |r: &Vec<DVec2>| resample(&r.iter().map(|p| *p * scale).collect::<Vec<_>>(), step);
-        let outer = ring(&polygon.outer).into_iter().map(|p| place(p / scale)).collect();
-        let holes = polygon.holes.iter().map(|h| ring(h).into_iter().map(|p| place(p / scale)).collect()).collect();
-        mapped.push(Polygon { outer, holes });
+        mapped.push(Polygon { outer: ring(&polygon.outer), holes: polygon.holes.iter().map(ring).collect() });
     }
     let separate: f64 = mapped.iter().map(Polygon::area).sum();
     let region = union(&[&Region::new(mapped)]);

@@ -10,7 +10,7 @@ mod planar_topology;
 mod svg_path;
 
 pub use along::{Along, AlongError};
-pub use band_to_plane::{PlanarPattern, map_along};
-pub use parametric::{Curve, CurveError};
+pub use band_to_plane::{MAPPING_TOLERANCE_MM, PlanarPattern, map_along};
+pub use parametric::{CORNER_ANGLE_DEG, Curve, CurveError};
 pub use planar_topology::planar_topology;
 pub use svg_path::first_path_points;

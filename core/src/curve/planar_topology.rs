@@ -22,18 +22,14 @@ pub fn planar_topology(region: &Region, curve: &Curve) -> PatternTopology {
 fn inner_probe(region: &Region, curve: &Curve) -> Option<DVec2> {
     let bounds = Rect::from_points(curve.points().iter().copied())?;
     let n = 48;
-    let mut best: Option<(f64, DVec2)> = None;
-    for i in 0..=n {
-        for j in 0..=n {
-            let p = bounds.min + bounds.size() * DVec2::new(i as f64 / n as f64, j as f64 / n as f64);
-            if curve.winding(p) == 0 || region.contains(p) {
-                continue;
-            }
-            let d = curve.distance(p);
-            if best.is_none_or(|(b, _)| d > b) {
-                best = Some((d, p));
-            }
-        }
-    }
-    best.map(|(_, p)| p)
+    // The farthest candidates first; the pattern is tested only until one
+    // lies outside it, since testing a point against it is the costly part.
+    let mut candidates: Vec<(f64, DVec2)> = (0..=n)
+        .flat_map(|i| (0..=n).map(move |j| DVec2::new(i as f64 / n as f64, j as f64 / n as f64)))
+        .map(|t| bounds.min + bounds.size() * t)
+        .filter(|&p| curve.winding(p) != 0)
+        .map(|p| (curve.distance(p), p))
+        .collect();
+    candidates.sort_by(|a, b| b.0.total_cmp(&a.0));
+    candidates.into_iter().map(|(_, p)| p).find(|&p| !region.contains(p))
 }

@@ -35,7 +35,7 @@ pub fn region_to_svg(region: &Region) -> String {
         let mut d = String::new();
         for ring in polygon.rings() {
             for (k, p) in ring.iter().enumerate() {
-                let _ = write!(d, "{}{:.4},{:.4} ", if k == 0 { 'M' } else { 'L' }, p.x, -p.y);
+                let _ = write!(d, "{}{:.6},{:.6} ", if k == 0 { 'M' } else { 'L' }, p.x, -p.y);
             }
             d.push_str("Z ");
         }

@@ -12,7 +12,7 @@ mod topology;
 
 pub use boolean::{FillRule, clip_to_rect, difference, resolve_contours, union};
 pub use polygon::{Polygon, Region, ring_contains, signed_area};
-pub use polyline::resample;
+pub use polyline::{refine_mapped, resample};
 pub use rect::Rect;
 pub use sanity::{MIN_RING_AREA, RegionDefect};
 pub use topology::{PatternTopology, Topology, count_topology};

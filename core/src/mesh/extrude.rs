@@ -51,6 +51,40 @@ pub fn extrude(region: &Region, thickness_mm: f64) -> Result<Mesh, MeshError> {
     if !(thickness_mm.is_finite() && thickness_mm > 0.0) {
         return Err(MeshError::Thickness(thickness_mm));
     }
+    match extrude_exactly(region, thickness_mm) {
+        Err(MeshError::Tessellation(_)) => extrude_exactly(&repaired(region), thickness_mm),
+        result => result,
+    }
+}
+
+/// Smallest distance kept between successive vertices by the repair, mm:
+/// far below what a printer or a laser resolves, far above `f32` rounding.
+pub const REPAIR_SPACING_MM: f64 = 1e-4;
+
+/// The region with its rings cleaned for the `f32` output: vertices closer
+/// than [`REPAIR_SPACING_MM`] to the previous one dropped, then resolved
+/// again by a union, so that rounding cannot make an outline cross itself
+/// or touch another ring. Used when the region as given cannot be meshed.
+fn repaired(region: &Region) -> Region {
+    let thin = |ring: &Vec<glam::DVec2>| {
+        let mut out: Vec<glam::DVec2> = Vec::with_capacity(ring.len());
+        for &p in ring {
+            let p = glam::DVec2::new(f64::from(p.x as f32), f64::from(p.y as f32));
+            if out.last().is_none_or(|q| q.distance(p) >= REPAIR_SPACING_MM) {
+                out.push(p);
+            }
+        }
+        out
+    };
+    let polygons = region
+        .polygons
+        .iter()
+        .map(|p| crate::geom::Polygon { outer: thin(&p.outer), holes: p.holes.iter().map(thin).collect() })
+        .collect();
+    crate::geom::union(&[&Region::new(polygons)])
+}
+
+fn extrude_exactly(region: &Region, thickness_mm: f64) -> Result<Mesh, MeshError> {
     // STL stores `f32`: vertices are rounded to it first and welded by exact
     // position, so two vertices never become one only in the file.
     let round = |p: glam::DVec2| glam::DVec2::new(f64::from(p.x as f32), f64::from(p.y as f32));

@@ -175,6 +175,27 @@ impl PieceSet {
         &self.shape_classes
     }
 
+    /// The same set with one piece per shape (see [`PieceSet::shape_classes`]),
+    /// and for each of its pieces the index of that piece here. Identical
+    /// pieces give identical patterns, so the solver searches this smaller set.
+    pub fn distinct_shapes(&self) -> (PieceSet, Vec<usize>) {
+        let originals: Vec<usize> = (0..self.len()).filter(|&i| self.shape_classes[i] == i).collect();
+        let pieces: Vec<Piece> =
+            originals.iter().enumerate().map(|(k, &i)| Piece { index: k, ..self.pieces[i].clone() }).collect();
+        let n = self.len();
+        let pairs = originals.iter().flat_map(|&a| originals.iter().map(move |&b| self.pairs[a * n + b])).collect();
+        let shape_classes = (0..pieces.len()).collect();
+        let set = PieceSet {
+            pieces,
+            cuts: self.cuts.clone(),
+            exemplar_height: self.exemplar_height,
+            exemplar_width: self.exemplar_width,
+            pairs,
+            shape_classes,
+        };
+        (set, originals)
+    }
+
     /// Number of pieces.
     pub fn len(&self) -> usize {
         self.pieces.len()

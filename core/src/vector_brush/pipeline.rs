@@ -8,7 +8,7 @@ use super::{
     SliceOptions, Solution, SolveError, SolveOptions, spread_offsets, stitch,
 };
 use crate::control::{Control, MaybeCancelled};
-use crate::curve::{Curve, CurveError, PlanarPattern, map_along, planar_topology};
+use crate::curve::{Curve, CurveError, MAPPING_TOLERANCE_MM, PlanarPattern, map_along, planar_topology};
 use crate::geom::{PatternTopology, count_topology};
 use crate::mesh::MeshError;
 use crate::report::{Timings, Warning};
@@ -62,6 +62,9 @@ pub struct Synthesis {
     pub band: BandPattern,
     /// The pattern in the plane (millimetres).
     pub planar: PlanarPattern,
+    /// The curve the pattern follows: the one asked for, with its sharp
+    /// corners rounded so that the band turns them without folding.
+    pub curve: Curve,
     /// Topology counted on `planar`, independently of the solver.
     pub topology: PatternTopology,
     /// Time per stage: `analysis`, `solve`, `geometry`.
@@ -93,6 +96,11 @@ pub fn synthesize(
     synthesize_at_scale(exemplar, curve, settings, settings.mm_per_unit(exemplar.height()), control)
 }
 
+/// Radius of the arcs that replace a curve's sharp corners, in half bands:
+/// a little more than the band's half-height, so that its inner edge turns
+/// the corner instead of folding over itself.
+pub const CORNER_RADIUS: f64 = 1.25;
+
 fn synthesize_at_scale(
     exemplar: &Exemplar,
     curve: &Curve,
@@ -103,6 +111,7 @@ fn synthesize_at_scale(
     if !(scale.is_finite() && scale > 0.0) {
         return Err(InvalidSetting(format!("the scale {scale} mm per unit must be positive")).into());
     }
+    let curve = &curve.with_rounded_corners(CORNER_RADIUS * 0.5 * settings.band_mm);
     let mut timings = Timings::default();
     let mut slicing = SliceOptions::default();
     slicing.mode = settings.slicing;
@@ -123,7 +132,8 @@ fn synthesize_at_scale(
 
     let (band, planar, topology) = timings.time("geometry", || {
         let offsets = spread_offsets(&set, &solution.pieces, &solution.offsets, kind);
-        let mut band = stitch(&set, &solution.pieces, &offsets, curve.length() / scale, kind);
+        let mut band =
+            stitch(&set, &solution.pieces, &offsets, curve.length() / scale, kind, MAPPING_TOLERANCE_MM / scale);
         // The solver kept every piece within the band and stitching moves
         // endpoints by half their mismatch; what still pokes out (a loop's
         // closing error spread over its seams) is pressed back in, so the
@@ -156,6 +166,7 @@ fn synthesize_at_scale(
         solution,
         band,
         planar,
+        curve: curve.clone(),
         topology,
         timings,
         warnings,

@@ -43,12 +43,22 @@ pub fn make_product(
             synthesize_rectangle(exemplar, *width_mm, *height_mm, settings, control)?
         }
     };
-    let Synthesis { scale_mm_per_unit, piece_count, solution, band, planar, topology, mut timings, warnings } =
-        synthesis;
+    let Synthesis {
+        scale_mm_per_unit,
+        piece_count,
+        solution,
+        band,
+        planar,
+        curve: followed,
+        topology,
+        mut timings,
+        warnings,
+    } = synthesis;
     let mesh = timings.time("mesh", || extrude(&planar.region, settings.thickness_mm))?;
     let mut overlays = Overlays::default();
     let length_mm = match along {
-        Along::Curve(curve) => {
+        Along::Curve(_) => {
+            let curve = &followed;
             let half = 0.5 * settings.band_mm;
             let steps = ((curve.length() * BAND_EDGE_SAMPLES_PER_MM).ceil() as usize).clamp(2, 5000);
             let edge = |side: f64| -> Vec<DVec2> {

@@ -22,7 +22,7 @@ use glam::DVec2;
 use serde::{Deserialize, Serialize};
 
 use super::{CurveKind, PieceSet};
-use crate::geom::{Polygon, Region, resample, union};
+use crate::geom::{Polygon, Region, refine_mapped, union};
 
 /// A synthesized pattern in band space: `u` from 0 to the curve length,
 /// `v` across the band, in exemplar units.
@@ -153,8 +153,16 @@ pub const BREAK_GAP: f64 = 0.05;
 const MAX_BEND: f64 = 1.5;
 
 /// Stitches the pieces of `sequence`, raised by `offsets`, into one pattern
-/// of exactly `length` exemplar units along `u`.
-pub fn stitch(set: &PieceSet, sequence: &[usize], offsets: &[f64], length: f64, curve: CurveKind) -> BandPattern {
+/// of exactly `length` exemplar units along `u`. Outlines are refined until
+/// the deformed curve is within `tolerance` (exemplar units) of its chords.
+pub fn stitch(
+    set: &PieceSet,
+    sequence: &[usize],
+    offsets: &[f64],
+    length: f64,
+    curve: CurveKind,
+    tolerance: f64,
+) -> BandPattern {
     let n = sequence.len();
     let pieces: Vec<&super::Piece> = sequence.iter().map(|&i| &set.pieces[i]).collect();
     let total: f64 = pieces.iter().map(|p| p.width).sum();
@@ -261,7 +269,9 @@ pub fn stitch(set: &PieceSet, sequence: &[usize], offsets: &[f64], length: f64, 
         let (u0, u1) = (seam_u[i] + left_gap * stretch, seam_u[i + 1] - right_gap * stretch);
         let width = u1 - u0;
         let radius = 0.3 * width;
-        let step = (piece.width / 12.0).min(set.exemplar_height / 24.0).max(1e-9);
+        // Long edges are split first, so that a bend between their ends is seen.
+        let max_step = (piece.width / 2.0).min(set.exemplar_height / 4.0).max(1e-9);
+        let tolerance = tolerance.max(1e-9 * set.exemplar_height);
         let place = |p: DVec2| -> DVec2 {
             // Points on a cut must land exactly on the seam line, whatever
             // rounding the clipping left in them.
@@ -309,7 +319,7 @@ pub fn stitch(set: &PieceSet, sequence: &[usize], offsets: &[f64], length: f64, 
             DVec2::new(u, v)
         };
         for polygon in &piece.region.polygons {
-            let deform = |ring: &Vec<DVec2>| resample(ring, step).into_iter().map(place).collect::<Vec<_>>();
+            let deform = |ring: &Vec<DVec2>| refine_mapped(ring, place, max_step, tolerance);
             polygons.push(Polygon { outer: deform(&polygon.outer), holes: polygon.holes.iter().map(deform).collect() });
         }
     }

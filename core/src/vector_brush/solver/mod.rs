@@ -192,9 +192,26 @@ pub const STATE_BYTES: usize = 96;
 /// ```
 pub fn solve(set: &PieceSet, options: &SolveOptions, control: &Control) -> Result<Solution, SolveError> {
     validate(set, options)?;
-    match search_all(set, options, control)? {
-        Some(solution) => Ok(solution),
-        None => Err(SolveError::NoSolution(diagnose(set, options, control)?)),
+    // Pieces of the same shape are interchangeable: search one of each.
+    let distinct = set.shape_classes().iter().enumerate().all(|(i, &c)| c == i);
+    let reduced;
+    let (search_set, originals) = if distinct {
+        (set, None)
+    } else {
+        let (smaller, originals) = set.distinct_shapes();
+        reduced = smaller;
+        (&reduced, Some(originals))
+    };
+    match search_all(search_set, options, control)? {
+        Some(mut solution) => {
+            if let Some(originals) = originals {
+                for p in &mut solution.pieces {
+                    *p = originals[*p];
+                }
+            }
+            Ok(solution)
+        }
+        None => Err(SolveError::NoSolution(diagnose(search_set, options, control)?)),
     }
 }
 
