@@ -185,7 +185,8 @@ fn run_one(
         run.reason =
             format!("planned {}c {}h, counted {}c {}h, {} bodies", s.components, s.holes, counted.0, counted.1, bodies);
     }
-    run.drift = max_distance_from(&synthesis.planar.region, curve) / (0.5 * settings.band_mm);
+    // Against the curve the pattern follows: the one asked for, sharp corners rounded.
+    run.drift = max_distance_from(&synthesis.planar.region, &synthesis.curve) / (0.5 * settings.band_mm);
     // Shape classes along the pattern, from the same cut of the exemplar.
     if let Ok(set) = PieceSet::new(exemplar, &SliceOptions::default()) {
         let classes: Vec<usize> = s.pieces.iter().map(|&p| set.shape_classes()[p]).collect();

@@ -199,9 +199,8 @@ impl Curve {
     /// The curve with every sharp corner replaced by a circular arc of
     /// `radius` (smaller where the segments beside the corner are too short),
     /// so that a band of half-height below `radius` turns the corner without
-    /// folding. Vertices that turn less than [`CORNER_ANGLE_DEG`], or whose
-    /// turn over the shorter neighbouring segment means a radius of at least
-    /// `radius`, are left as they are: smooth curves come back unchanged.
+    /// folding. Vertices that turn less than [`CORNER_ANGLE_DEG`] are left as
+    /// they are: finely sampled smooth curves come back unchanged.
     ///
     /// ```
     /// use tracery_core::curve::Curve;
@@ -235,11 +234,7 @@ impl Curve {
             let (prev, here, next) = (pts[(i + n - 1) % n], pts[i], pts[(i + 1) % n]);
             let (d_in, d_out) = (here - prev, next - here);
             let turn = d_in.perp_dot(d_out).atan2(d_in.dot(d_out));
-            // A vertex of a finely sampled smooth curve turns little over a
-            // short segment: it is a corner only where its turn over the
-            // shorter neighbouring segment means a radius below `radius`.
-            let local_radius = d_in.length().min(d_out.length()) / turn.abs().max(1e-12);
-            if turn.abs() < threshold || local_radius >= radius {
+            if turn.abs() < threshold {
                 out.push(here);
                 continue;
             }
