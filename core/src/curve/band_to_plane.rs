@@ -34,7 +34,7 @@ pub const MAPPING_TOLERANCE_MM: f64 = 0.005;
 /// so the output never intersects itself.
 pub fn map_along(band_region: &Region, scale: f64, curve: &Curve) -> PlanarPattern {
     let mut warnings = Vec::new();
-    let half = band_region.rings().flatten().map(|p| p.y.abs()).fold(0.0, f64::max) * scale;
+    let half = band_region.reach_from_axis() * scale;
     let length = curve.length();
     // Narrowing factor sampled along the curve.
     let samples = ((length / (0.25 * half.max(1e-3))).ceil() as usize).clamp(64, 20_000);

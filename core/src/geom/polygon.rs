@@ -129,6 +129,12 @@ impl Region {
         self.polygons.iter().flat_map(Polygon::rings)
     }
 
+    /// How far the region reaches from the axis `y = 0` (in band space: from
+    /// the curve), 0 for an empty region.
+    pub fn reach_from_axis(&self) -> f64 {
+        self.rings().flatten().map(|p| p.y.abs()).fold(0.0, f64::max)
+    }
+
     /// The bounding box, or `None` for an empty region.
     pub fn bounds(&self) -> Option<Rect> {
         Rect::from_points(self.rings().flatten().copied())

@@ -57,6 +57,11 @@ pub fn extrude(region: &Region, thickness_mm: f64) -> Result<Mesh, MeshError> {
     }
 }
 
+/// The point with its coordinates rounded to `f32`, as STL stores them.
+fn round_to_f32(p: glam::DVec2) -> glam::DVec2 {
+    glam::DVec2::new(f64::from(p.x as f32), f64::from(p.y as f32))
+}
+
 /// Smallest distance kept between successive vertices by the repair, mm:
 /// far below what a printer or a laser resolves, far above `f32` rounding.
 pub const REPAIR_SPACING_MM: f64 = 1e-4;
@@ -69,7 +74,7 @@ fn repaired(region: &Region) -> Region {
     let thin = |ring: &Vec<glam::DVec2>| {
         let mut out: Vec<glam::DVec2> = Vec::with_capacity(ring.len());
         for &p in ring {
-            let p = glam::DVec2::new(f64::from(p.x as f32), f64::from(p.y as f32));
+            let p = round_to_f32(p);
             if out.last().is_none_or(|q| q.distance(p) >= REPAIR_SPACING_MM) {
                 out.push(p);
             }
@@ -87,13 +92,12 @@ fn repaired(region: &Region) -> Region {
 fn extrude_exactly(region: &Region, thickness_mm: f64) -> Result<Mesh, MeshError> {
     // STL stores `f32`: vertices are rounded to it first and welded by exact
     // position, so two vertices never become one only in the file.
-    let round = |p: glam::DVec2| glam::DVec2::new(f64::from(p.x as f32), f64::from(p.y as f32));
     let mut rounded: Vec<Vec<glam::DVec2>> = region
         .rings()
         .map(|ring| {
             let mut r: Vec<glam::DVec2> = Vec::with_capacity(ring.len());
             for &p in ring {
-                let q = round(p);
+                let q = round_to_f32(p);
                 if r.last() != Some(&q) {
                     r.push(q);
                 }
@@ -122,7 +126,7 @@ fn extrude_exactly(region: &Region, thickness_mm: f64) -> Result<Mesh, MeshError
                 let inward = ((original[k] - prev).normalize_or_zero().perp()
                     + (next - original[k]).normalize_or_zero().perp())
                 .normalize_or_zero();
-                ring[k] = round(original[k] + inward * TOUCH_GAP_MM);
+                ring[k] = round_to_f32(original[k] + inward * TOUCH_GAP_MM);
             }
         }
     }

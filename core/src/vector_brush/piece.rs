@@ -32,7 +32,7 @@ impl Piece {
 
     /// How far the piece's material reaches from the band's axis (`v = 0`).
     pub fn extent(&self) -> f64 {
-        self.region.rings().flatten().map(|p| p.y.abs()).fold(0.0, f64::max)
+        self.region.reach_from_axis()
     }
 
     /// Portal endpoint heights on the left side, top to bottom (two per portal).
@@ -194,6 +194,13 @@ impl PieceSet {
             shape_classes,
         };
         (set, originals)
+    }
+
+    /// The cost of following piece `a` with piece `b` when their portals join
+    /// them; `None` at a break (no portal, the pieces only sit side by side)
+    /// and when they cannot follow each other.
+    pub fn joining(&self, a: usize, b: usize) -> Option<&PairCost> {
+        self.pair(a, b).filter(|_| !self.pieces[a].right.is_empty())
     }
 
     /// Number of pieces.

@@ -38,7 +38,7 @@ pub fn position_offsets(set: &PieceSet, sequence: &[usize], curve: CurveKind) ->
             if closing && curve == CurveKind::Open {
                 return None;
             }
-            set.pair(a, b).filter(|_| !set.pieces[a].right.is_empty()).map(|p| p.tau)
+            set.joining(a, b).map(|p| p.tau)
         })
         .collect();
     least_squares_offsets(set, sequence, &steps)
@@ -60,7 +60,7 @@ fn least_squares_offsets(set: &PieceSet, sequence: &[usize], steps: &[Option<f64
     if m == 0 {
         return vec![0.0; n];
     }
-    let pinned: Vec<bool> = (0..n).map(|i| i == 0 || set.pieces[sequence[i - 1]].right.is_empty()).collect();
+    let pinned: Vec<bool> = (0..n).map(|i| i == 0 || set.joining(sequence[i - 1], sequence[i]).is_none()).collect();
     let mut diag = vec![AXIS_WEIGHT; m];
     let mut off = vec![0.0; m.saturating_sub(1)];
     let mut rhs = vec![0.0; m];
@@ -115,8 +115,7 @@ pub fn spread_offsets(set: &PieceSet, sequence: &[usize], solved: &[f64], curve:
     let steps: Vec<Option<f64>> = (0..n)
         .map(|i| {
             let (a, b) = (sequence[i], sequence[(i + 1) % n]);
-            let linked = !set.pieces[a].right.is_empty() && set.pair(a, b).is_some();
-            linked.then(|| if i + 1 < n { solved[i + 1] - solved[i] } else { set.pair(a, b).map_or(0.0, |p| p.tau) })
+            set.joining(a, b).map(|p| if i + 1 < n { solved[i + 1] - solved[i] } else { p.tau })
         })
         .collect();
     least_squares_offsets(set, sequence, &steps)

@@ -41,7 +41,7 @@ pub struct BandPattern {
 impl BandPattern {
     /// How far the pattern reaches from the axis `v = 0`.
     pub fn extent(&self) -> f64 {
-        self.region.rings().flatten().map(|p| p.y.abs()).fold(0.0, f64::max)
+        self.region.reach_from_axis()
     }
 
     /// Scales `v` down uniformly when the pattern reaches past `limit`, so it
@@ -179,7 +179,7 @@ pub fn stitch(
     // closing seam), the shared endpoint targets.
     let joined = |k: usize| -> Option<(usize, usize)> {
         let (a, b) = if k == n { (n - 1, 0) } else { (k - 1, k) };
-        let linked = !pieces[a].right.is_empty() && set.pair(sequence[a], sequence[b]).is_some();
+        let linked = set.joining(sequence[a], sequence[b]).is_some();
         (linked && (k < n || curve == CurveKind::Closed)).then_some((a, b))
     };
     let mut right_maps: Vec<SideMap> = (0..n).map(|i| SideMap::Shift(offsets[i])).collect();

@@ -101,11 +101,15 @@ impl Problem<'_> {
         if held > self.max_hold {
             return None;
         }
-        // Holding every endpoint of the seam back by `held` adds exactly
-        // `(held / H)²` to the pair's mean squared mismatch, `τ` being its
-        // least-squares alignment.
-        let extra = f64::from(held) / self.set.exemplar_height.max(f64::MIN_POSITIVE);
-        Some((raw.clamp(-allowance, allowance), MATCH_WEIGHT * extra * extra))
+        Some((raw.clamp(-allowance, allowance), self.misalignment_cost(held)))
+    }
+
+    /// What a seam pays when its pieces sit `by` off their best alignment:
+    /// moving every endpoint by `by` adds exactly `(by / H)²` to the pair's
+    /// mean squared mismatch, `τ` being its least-squares alignment.
+    fn misalignment_cost(&self, by: f32) -> f64 {
+        let relative = f64::from(by) / self.set.exemplar_height.max(f64::MIN_POSITIVE);
+        MATCH_WEIGHT * relative * relative
     }
 
     fn seam_cost(&self, a: usize, b: usize, length: u32) -> f64 {
@@ -325,8 +329,7 @@ impl<'p> Search<'p> {
             }
             total += closing;
             if options.band_height.is_finite() {
-                let unclosed = f64::from(raw) / problem.set.exemplar_height.max(f64::MIN_POSITIVE);
-                total += MATCH_WEIGHT * unclosed * unclosed;
+                total += problem.misalignment_cost(raw);
             }
         }
         let Some(t) = problem.finished(&self.interner.list[state.descriptor as usize]) else {
@@ -393,7 +396,7 @@ pub(super) fn search_all(
             if let Some(pair) = set.pair(a, b) {
                 cost[a * n + b] = pair.cost;
                 tau[a * n + b] = pair.tau;
-                if set.pieces[a].right.is_empty() {
+                if set.joining(a, b).is_none() {
                     keep[a * n + b] = 0.0;
                 }
             }
