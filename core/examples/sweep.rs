@@ -23,9 +23,7 @@ use tracery_core::export::region_to_svg;
 use tracery_core::geom::Region;
 use tracery_core::mesh::extrude;
 use tracery_core::quality::{longest_repeat, max_distance_from, near_period, seam_kinks_deg};
-use tracery_core::vector_brush::{
-    Exemplar, LoadOptions, PieceSet, Settings, SliceOptions, SolveError, SynthesisError, Target, synthesize,
-};
+use tracery_core::vector_brush::{Exemplar, LoadOptions, Settings, SolveError, SynthesisError, Target, synthesize};
 
 struct Args {
     corpus: PathBuf,
@@ -162,6 +160,11 @@ fn run_one(
             return run;
         }
     };
+    if let Err(defect) = mesh.sanity_check() {
+        run.status = "mesh";
+        run.reason = format!("the mesh is not watertight and manifold: {defect:?}");
+        return run;
+    }
     let s = &synthesis.solution;
     if let Some(dir) = svg_dir {
         let name = format!("{}_{}_{}.svg", run.ornament, spec.replace(':', ""), run.target.replace('/', "-"));
@@ -188,12 +191,10 @@ fn run_one(
     // Against the curve the pattern follows: the one asked for, sharp corners rounded.
     run.drift = max_distance_from(&synthesis.planar.region, &synthesis.curve) / (0.5 * settings.band_mm);
     // Shape classes along the pattern, from the same cut of the exemplar.
-    if let Ok(set) = PieceSet::new(exemplar, &SliceOptions::default()) {
-        let classes: Vec<usize> = s.pieces.iter().map(|&p| set.shape_classes()[p]).collect();
-        let n = classes.len().max(1) as f64;
-        run.period = near_period(&classes) as f64 / n;
-        run.repeat = longest_repeat(&classes) as f64 / n;
-    }
+    let classes = &synthesis.shape_classes;
+    let n = classes.len().max(1) as f64;
+    run.period = near_period(classes) as f64 / n;
+    run.repeat = longest_repeat(classes) as f64 / n;
     let band = &synthesis.band;
     let tolerance = 1e-6 * band.length;
     run.seam_deg = seam_kinks_deg(&band.region, &band.seams, tolerance).into_iter().fold(0.0, f64::max);

@@ -7,6 +7,7 @@ pub mod flatten;
 mod polygon;
 mod polyline;
 mod rect;
+mod resolution;
 mod sanity;
 mod topology;
 
@@ -14,5 +15,6 @@ pub use boolean::{FillRule, clip_to_rect, difference, resolve_contours, union};
 pub use polygon::{Polygon, Region, ring_contains, signed_area};
 pub use polyline::{refine_mapped, resample};
 pub use rect::Rect;
+pub use resolution::{mean_width, without_slivers};
 pub use sanity::{MIN_RING_AREA, RegionDefect};
 pub use topology::{PatternTopology, Topology, count_topology};

@@ -91,7 +91,8 @@ pub enum Unmet {
         /// Holes asked for.
         holes: Target,
     },
-    /// The band is too narrow for the offsets the pieces need.
+    /// The pattern fills the band, and the offsets the pieces need to line
+    /// up would take it out: only a pattern smaller than the band has room.
     Band,
     /// A pattern that runs all around the loop.
     ClosedPattern,
@@ -110,7 +111,10 @@ impl std::fmt::Display for Unmet {
                 f,
                 "{components} component(s) with {holes} hole(s) cannot be made together; relax one of the two targets"
             ),
-            Unmet::Band => write!(f, "the pieces drift out of a band this narrow; widen the band"),
+            Unmet::Band => write!(
+                f,
+                "the pieces cannot be lined up inside the band at this scale; lower the scale so the pattern has room in the band"
+            ),
             Unmet::ClosedPattern => {
                 write!(f, "no pattern from this exemplar runs all around the loop; turn off 'closed pattern'")
             }

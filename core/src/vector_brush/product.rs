@@ -53,6 +53,7 @@ pub fn make_product(
         topology,
         mut timings,
         warnings,
+        ..
     } = synthesis;
     let mesh = timings.time("mesh", || extrude(&planar.region, settings.thickness_mm))?;
     let mut overlays = Overlays::default();

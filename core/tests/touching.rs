@@ -1,0 +1,80 @@
+//! Meshing where outlines touch at a single point: the configurations that
+//! real ornaments produce (a hole whose tip touches the outline, two strokes
+//! that meet tip to tip at a shallow angle, a loop closing onto itself), each
+//! checked for a watertight, manifold mesh with the right number of bodies.
+
+use glam::DVec2;
+use tracery_core::geom::{Polygon, Region, count_topology, without_slivers};
+use tracery_core::mesh::extrude;
+
+fn v(x: f64, y: f64) -> DVec2 {
+    DVec2::new(x, y)
+}
+
+fn check(region: &Region, bodies: usize) {
+    let mesh = extrude(region, 1.0).expect("meshes");
+    mesh.sanity_check().expect("watertight and manifold");
+    assert_eq!(mesh.shell_count(), bodies);
+}
+
+#[test]
+fn a_hole_whose_tip_touches_the_outline_meshes_as_one_body() {
+    // The hole's apex is a vertex of the outer ring's straight bottom edge.
+    let outer = vec![v(0.0, 0.0), v(5.0, 0.0), v(10.0, 0.0), v(10.0, 10.0), v(0.0, 10.0)];
+    let hole = vec![v(5.0, 0.0), v(4.0, 5.0), v(6.0, 5.0)];
+    let region = Region::new(vec![Polygon { outer, holes: vec![hole] }]);
+    check(&region, 1);
+}
+
+#[test]
+fn strokes_meeting_tip_to_tip_at_a_shallow_angle_stay_two_bodies() {
+    // Two thin spikes whose tips meet at the origin, nearly collinear: moving
+    // both tips along their own bisectors used to cross the other spike.
+    let right = vec![v(0.0, 0.0), v(3.0, 0.01), v(3.0, 0.2)];
+    let left = vec![v(0.0, 0.0), v(-3.0, -0.01), v(-3.0, 0.15)];
+    let mut left = left;
+    left.reverse();
+    let region = Region::new(vec![Polygon { outer: right, holes: vec![] }, Polygon { outer: left, holes: vec![] }]);
+    assert!(tracery_core::geom::signed_area(&region.polygons[1].outer) > 0.0);
+    check(&region, 2);
+}
+
+#[test]
+fn a_part_inside_a_hole_touching_its_edge_meshes() {
+    // A frame with a square hole and, in the hole, a diamond touching the
+    // hole's bottom edge at one point: the hole's copy is a straight run,
+    // the diamond's a convex corner.
+    let outer = vec![v(0.0, 0.0), v(10.0, 0.0), v(10.0, 10.0), v(0.0, 10.0)];
+    let hole = vec![v(2.0, 2.0), v(2.0, 8.0), v(8.0, 8.0), v(8.0, 2.0), v(5.0, 2.0)];
+    let diamond = vec![v(5.0, 2.0), v(6.0, 4.0), v(5.0, 6.0), v(4.0, 4.0)];
+    let region = Region::new(vec![Polygon { outer, holes: vec![hole] }, Polygon { outer: diamond, holes: vec![] }]);
+    check(&region, 2);
+}
+
+#[test]
+fn hairline_slivers_are_not_holes() {
+    // A frame with a real hole and a sliver 2 µm wide: only the real hole counts.
+    let outer = vec![v(0.0, 0.0), v(10.0, 0.0), v(10.0, 10.0), v(0.0, 10.0)];
+    let real = vec![v(2.0, 2.0), v(2.0, 4.0), v(4.0, 4.0), v(4.0, 2.0)];
+    let sliver = vec![v(2.0, 6.0), v(2.0, 6.002), v(8.0, 6.002), v(8.0, 6.0)];
+    let region = Region::new(vec![Polygon { outer, holes: vec![real, sliver] }]);
+    assert_eq!(count_topology(&region).holes, 2);
+    let cleaned = without_slivers(&region, 0.01);
+    assert_eq!(count_topology(&cleaned).holes, 1);
+    check(&cleaned, 1);
+}
+
+#[test]
+fn holes_meeting_tip_to_tip_mesh_as_one_body() {
+    // Two thin holes whose tips meet at one point at a shallow angle, as
+    // where two loops of a rosette graze each other: the material wraps
+    // around both tips, so neither corner is convex.
+    let outer = vec![v(-5.0, -5.0), v(5.0, -5.0), v(5.0, 5.0), v(-5.0, 5.0)];
+    let right = vec![v(0.0, 0.0), v(3.0, 1.3), v(3.0, 0.02)];
+    let left = vec![v(0.0, 0.0), v(-3.0, -1.0), v(-3.0, -0.02)];
+    for hole in [&right, &left] {
+        assert!(tracery_core::geom::signed_area(hole) < 0.0, "holes run clockwise");
+    }
+    let region = Region::new(vec![Polygon { outer, holes: vec![right, left] }]);
+    check(&region, 1);
+}
