@@ -3,7 +3,7 @@
 //! final geometry by measures the solver does not see. The whole sweep is
 //! `cargo run -p tracery-core --release --example sweep` (see docs/quality.md).
 //!
-//! Ignored until the pinch-point mismatches it finds are fixed (9 of 30
+//! Ignored until the pinch-point mismatches it finds are fixed (7 of 30
 //! answered runs, on two ornaments): `cargo test -p tracery-core --test corpus -- --ignored`.
 
 use std::path::PathBuf;

@@ -17,7 +17,10 @@
 /// exemplars of 10 to 20 pieces and would cost memory in every DP state.
 pub const LAGS: usize = 12;
 
-/// Fixed-point scale of the per-lag sums.
+/// Fixed-point scale of the per-lag sums. The sums are `u32`: at this scale
+/// they would need sixteen million fully matching pairs at one lag to
+/// saturate, so the penalty keeps growing with the repetition however long
+/// the curve (with `u16` it stopped at 256 pairs, a few hundred pieces).
 const SCALE: f64 = 256.0;
 
 /// Running autocorrelation of a sequence: the last pieces and the sum per lag.
@@ -25,11 +28,11 @@ const SCALE: f64 = 256.0;
 pub struct Autocorrelation {
     /// `history[k]` is the piece `k + 1` places before the end.
     history: [u8; LAGS],
-    sums: [u16; LAGS],
+    sums: [u32; LAGS],
     /// How many entries of `history` are filled.
     filled: u8,
     /// The largest of `sums`, kept so that comparing states is cheap.
-    max: u16,
+    max: u32,
 }
 
 impl Default for Autocorrelation {
@@ -59,9 +62,9 @@ impl Autocorrelation {
         let p = piece.min(255) as u8;
         let mut next = *self;
         for (sum, &h) in next.sums.iter_mut().zip(self.history.iter()).take(usize::from(self.filled)) {
-            *sum = sum.saturating_add(similarity.table[usize::from(h.abs_diff(p))]);
+            *sum = sum.saturating_add(u32::from(similarity.table[usize::from(h.abs_diff(p))]));
         }
-        next.max = next.sums.iter().copied().fold(0, u16::max);
+        next.max = next.sums.iter().copied().fold(0, u32::max);
         next.history.copy_within(0..LAGS - 1, 1);
         next.history[0] = p;
         next.filled = (self.filled + 1).min(LAGS as u8);
@@ -85,5 +88,21 @@ impl Autocorrelation {
     /// ```
     pub fn of(sequence: &[usize], similarity: &Similarity) -> Autocorrelation {
         sequence.iter().fold(Autocorrelation::default(), |a, &p| a.push(p, similarity))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_penalty_keeps_growing_on_long_repetitions() {
+        // 2000 copies of one piece: every lag matches 2000 times, far past
+        // what 16-bit sums held.
+        let s = Similarity::new(0.5);
+        let long = Autocorrelation::of(&[3; 2000], &s).value();
+        let longer = Autocorrelation::of(&[3; 4000], &s).value();
+        assert!(long > 1990.0, "{long}");
+        assert!(longer > 1.9 * long, "{longer} vs {long}");
     }
 }

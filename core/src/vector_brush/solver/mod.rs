@@ -178,7 +178,7 @@ pub const BAND_MARGIN: f64 = 0.03;
 
 /// Bytes one DP state takes, with its share of the bucket maps and the
 /// variety history; used to turn the state cap into megabytes.
-pub const STATE_BYTES: usize = 96;
+pub const STATE_BYTES: usize = 124;
 
 /// Finds the best piece sequence for `options`.
 ///
