@@ -2,14 +2,24 @@
 //!
 //! # State
 //!
-//! A partial solution is keyed by *(last piece, topology descriptor, length)*,
-//! with the length counted in integer steps of a small quantum. Lengths only
-//! grow, so states are expanded in order of length, and two partial solutions
-//! compete only when they agree on all three: no solution is lost because it
-//! differs from a cheaper one in length alone (the paper keys by the number of
-//! pieces instead, which merges sequences of different lengths). With the
-//! variety term off and no band limit, the search is exact over the
-//! quantized widths; the exactness test checks it against exhaustive search.
+//! A partial solution is keyed by *(last piece, topology descriptor, length
+//! key)*. It carries its true length, and the key is that length rounded to a
+//! quantum ([`LengthGrid`]). States are expanded in order of key, and two
+//! partial solutions compete only when they agree on all three. The length
+//! window, and the length term of the cost, use the true length, so the
+//! quantum never adds up into a length error. An earlier version summed
+//! rounded widths: 13 pieces of uniform width came out 9.8% long against a
+//! 5% tolerance.
+//!
+//! The quantum decides how much is merged. By default it is the narrowest
+//! piece, or a tenth of the tolerance, whichever is smaller. Then sequences
+//! whose lengths differ by less than about a piece keep only the cheaper,
+//! which makes the search approximate: it has three to five times fewer
+//! states on ornaments with many portals than with a third of a piece. The
+//! tests measure the approximation against brute force
+//! (`the_default_length_key_stays_close_to_exact`). With a fine quantum,
+//! the variety term off and no band limit, the search is exact, and the
+//! exactness test checks it against exhaustive search.
 //!
 //! Descriptors are interned and each *(descriptor, piece) → descriptor* join
 //! is computed once, which turns the search into a shortest path over a small
@@ -109,8 +119,9 @@ pub struct SolveOptions {
     pub variety: f64,
     /// σ of the autocorrelation similarity, in piece indices.
     pub autocorrelation_sigma: f64,
-    /// Length quantum in exemplar units; `None` picks a third of the
-    /// narrowest piece (at most a fiftieth of ε).
+    /// Length quantum of the state keys, in exemplar units; `None` picks the
+    /// narrowest piece or a tenth of ε, whichever is smaller. Never wider
+    /// than the narrowest piece.
     pub length_quantum: Option<f64>,
     /// Most DP states held at once before giving up with an error.
     pub max_states: usize,

@@ -17,6 +17,7 @@ pub(super) struct Problem<'a> {
     options: &'a SolveOptions,
     grid: LengthGrid,
     steps: Vec<u32>,
+    widths: Vec<f64>,
     /// Pair costs, seed jitter excluded, `NaN` when incompatible.
     cost: Vec<f64>,
     /// `δ` after joining `a` then `b` is `δ·keep[a·n+b] + τ[a·n+b]`: a break
@@ -143,9 +144,10 @@ impl Problem<'_> {
         }
     }
 
-    /// One search from the given start pieces, using pieces `>= min_piece`,
-    /// up to `window.1` steps; returns the best finished sequence in `window`.
-    fn search(&self, starts: &[usize], min_piece: usize, window: (u32, u32)) -> Result<Option<Found>, SolveError> {
+    /// One search from the given start pieces, using pieces `>= min_piece`;
+    /// returns the best finished sequence whose true length is in `window`
+    /// (exemplar units).
+    fn search(&self, starts: &[usize], min_piece: usize, window: (f64, f64)) -> Result<Option<Found>, SolveError> {
         let mut search = Search::new(self, starts, min_piece, window);
         let result = search.run();
         self.states.fetch_sub(search.arena.len(), Ordering::Relaxed);
@@ -158,7 +160,10 @@ impl Problem<'_> {
 pub(super) struct Search<'p> {
     problem: &'p Problem<'p>,
     starts: &'p [usize],
-    window: (u32, u32),
+    /// Accepted true lengths, exemplar units.
+    window: (f64, f64),
+    /// The last key a state can have.
+    max_key: u32,
     /// For each piece, the pieces that may follow it.
     compatible: Vec<Vec<usize>>,
     interner: Interner,
@@ -172,15 +177,17 @@ pub(super) struct Search<'p> {
 }
 
 impl<'p> Search<'p> {
-    fn new(problem: &'p Problem<'p>, starts: &'p [usize], min_piece: usize, window: (u32, u32)) -> Self {
+    fn new(problem: &'p Problem<'p>, starts: &'p [usize], min_piece: usize, window: (f64, f64)) -> Self {
         let n = problem.n();
         let compatible =
             (0..n).map(|a| (min_piece..n).filter(|&b| !problem.cost[a * n + b].is_nan()).collect()).collect();
-        let ring = problem.steps.iter().copied().max().unwrap_or(1) as usize + 1;
+        // A piece of `k` whole steps moves the key by at most `k + 1`.
+        let ring = problem.steps.iter().copied().max().unwrap_or(1) as usize + 2;
         Search {
             problem,
             starts,
             window,
+            max_key: problem.grid.key(window.1),
             compatible,
             interner: Interner::new(n),
             arena: Vec::new(),
@@ -248,36 +255,40 @@ impl<'p> Search<'p> {
     fn run(&mut self) -> Result<(), SolveError> {
         let problem = self.problem;
         let n = problem.n();
-        let max_len = self.window.1;
+        let (max_len, max_key) = (self.window.1, self.max_key);
         for &s in self.starts {
-            let length = problem.steps[s];
+            let length = problem.widths[s];
             let d = problem.clamp(&problem.set.pieces[s].descriptor);
             if length > max_len || !problem.viable(&d) {
                 continue;
             }
             let descriptor = self.interner.intern(d);
-            let state = State { cost: 0.0, parent: NO_PARENT, descriptor, delta: 0.0, piece: s as u16 };
-            self.add(length, state, 0.0, |_| Autocorrelation::default().push(s, &problem.similarity))?;
+            let state = State { cost: 0.0, length, parent: NO_PARENT, descriptor, delta: 0.0, piece: s as u16 };
+            let key = problem.grid.key(length).max(1);
+            self.add(key, state, 0.0, |_| Autocorrelation::default().push(s, &problem.similarity))?;
         }
         let mut open: Vec<u32> = Vec::new();
-        for length in 0..=max_len {
+        for key in 0..=max_key {
             problem.control.check()?;
             problem.report_progress();
-            let slot = length as usize % self.buckets.len();
+            let slot = key as usize % self.buckets.len();
             open.clear();
             self.buckets[slot].drain_into(&mut open);
             for &index in &open {
                 let state = self.arena[index as usize];
                 let a = state.piece as usize;
-                if length >= self.window.0 {
-                    self.consider_end(index, length);
+                if state.length >= self.window.0 {
+                    self.consider_end(index);
                 }
                 for k in 0..self.compatible[a].len() {
                     let b = self.compatible[a][k];
-                    let next_length = length + problem.steps[b];
+                    let next_length = state.length + problem.widths[b];
                     if next_length > max_len {
                         continue;
                     }
+                    // Never below the next key, whatever the rounding: the
+                    // search runs in order of keys.
+                    let next_key = problem.grid.key(next_length).max(key + 1);
                     let raw = state.delta * problem.keep[a * n + b] + problem.tau[a * n + b] as f32;
                     let Some((delta, held_back)) = problem.hold_in_band(raw, b) else {
                         continue;
@@ -287,7 +298,8 @@ impl<'p> Search<'p> {
                         continue;
                     }
                     let next = State {
-                        cost: state.cost + problem.seam_cost(a, b, length) + held_back,
+                        cost: state.cost + problem.seam_cost(a, b, key) + held_back,
+                        length: next_length,
                         parent: index,
                         descriptor,
                         delta,
@@ -295,9 +307,7 @@ impl<'p> Search<'p> {
                     };
                     let floor =
                         if self.variety() { problem.options.variety * self.auto[index as usize].value() } else { 0.0 };
-                    self.add(next_length, next, floor, |search| {
-                        search.auto[index as usize].push(b, &problem.similarity)
-                    })?;
+                    self.add(next_key, next, floor, |search| search.auto[index as usize].push(b, &problem.similarity))?;
                 }
             }
         }
@@ -305,14 +315,14 @@ impl<'p> Search<'p> {
     }
 
     /// Records the state as a finished pattern if it closes and meets the targets.
-    fn consider_end(&mut self, index: u32, length: u32) {
+    fn consider_end(&mut self, index: u32) {
         let problem = self.problem;
         let options = problem.options;
         let state = &self.arena[index as usize];
         let a = state.piece as usize;
-        let target = f64::from(problem.grid.target);
-        let epsilon = (f64::from(self.window.1) - target).max(1.0);
-        let mut total = state.cost + options.length_weight * ((f64::from(length) - target) / epsilon).powi(2);
+        let target = options.target_length;
+        let epsilon = (self.window.1 - target).max(f64::MIN_POSITIVE);
+        let mut total = state.cost + options.length_weight * ((state.length - target) / epsilon).powi(2);
         if options.curve == CurveKind::Closed {
             // One search per start piece: its only start closes the loop.
             let s = self.starts[0];
@@ -388,6 +398,7 @@ pub(super) fn search_all(
     let n = set.len();
     let grid = LengthGrid::new(set, options);
     let steps: Vec<u32> = set.pieces.iter().map(|p| grid.steps(p.width)).collect();
+    let widths: Vec<f64> = set.pieces.iter().map(|p| p.width).collect();
     let mut cost = vec![f64::NAN; n * n];
     let mut tau = vec![0.0; n * n];
     let mut keep = vec![1.0; n * n];
@@ -412,13 +423,14 @@ pub(super) fn search_all(
         CurveKind::Open => 1,
         CurveKind::Closed => n,
     };
-    let first_window = grid.window(tolerances[0]);
-    let work_total = runs_per_level * (first_window.1 as usize + 1);
+    let window_of = |tolerance: f64| ((options.target_length - tolerance).max(0.0), options.target_length + tolerance);
+    let work_total = runs_per_level * (grid.key(window_of(tolerances[0]).1) as usize + 1);
     let mut problem = Problem {
         set,
         options,
         grid,
         steps,
+        widths,
         cost,
         tau,
         keep,
@@ -433,9 +445,8 @@ pub(super) fn search_all(
         control,
     };
     for &tolerance in &tolerances {
-        let window = grid.window(tolerance);
-        let window = (window.0, window.1.max(1));
-        problem.work_total = problem.work_total.max(runs_per_level * (window.1 as usize + 1));
+        let window = window_of(tolerance);
+        problem.work_total = problem.work_total.max(runs_per_level * (grid.key(window.1) as usize + 1));
         let found = match options.curve {
             CurveKind::Open => {
                 let starts: Vec<usize> = (0..n).filter(|&i| set.pieces[i].left.is_empty()).collect();

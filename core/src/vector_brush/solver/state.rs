@@ -6,7 +6,10 @@ use rustc_hash::FxHashMap;
 use super::{PieceSet, SolveOptions};
 use crate::vector_brush::TopologyDescriptor;
 
-/// Lengths as integer steps of a quantum, shared by the solver and its tests.
+/// Lengths as integer steps of a quantum: the key under which partial
+/// solutions of about the same length compete. Each state also carries its
+/// true length, so the quantum never adds up into a length error; it only
+/// decides which partial solutions are merged.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct LengthGrid {
     /// Exemplar units per step.
@@ -16,23 +19,26 @@ pub struct LengthGrid {
 }
 
 impl LengthGrid {
-    /// The grid the solver uses for `set` and `options`.
+    /// The grid the solver uses for `set` and `options`: by default the
+    /// narrowest piece or a tenth of the tolerance, whichever is smaller.
+    /// Never wider than the narrowest piece, so every piece moves a state to
+    /// a later key and the search runs in order of length.
     pub fn new(set: &PieceSet, options: &SolveOptions) -> Self {
         let narrowest = set.pieces.iter().map(|p| p.width).fold(f64::INFINITY, f64::min);
         let epsilon = options.length_tolerance * options.target_length;
-        let quantum = options.length_quantum.unwrap_or_else(|| (narrowest / 3.0).min(epsilon / 50.0).max(1e-12));
+        let quantum =
+            options.length_quantum.map_or_else(|| narrowest.min(epsilon / 10.0), |q| q.min(narrowest)).max(1e-12);
         LengthGrid { quantum, target: (options.target_length / quantum).round() as u32 }
     }
 
-    /// A width (or length) in steps; every piece takes at least one step.
-    pub fn steps(&self, width: f64) -> u32 {
-        ((width / self.quantum).round() as u32).max(1)
+    /// The key of a true length, in steps.
+    pub fn key(&self, length: f64) -> u32 {
+        (length / self.quantum).round() as u32
     }
 
-    /// The accepted window `[lo, hi]` in steps for a tolerance in exemplar units.
-    pub fn window(&self, tolerance: f64) -> (u32, u32) {
-        let e = (tolerance / self.quantum).floor() as u32;
-        (self.target.saturating_sub(e), self.target + e)
+    /// A width in whole steps, rounded up: the most a piece can advance the key, less one.
+    pub fn steps(&self, width: f64) -> u32 {
+        ((width / self.quantum).ceil() as u32).max(1)
     }
 }
 
@@ -43,6 +49,8 @@ pub(super) const NO_PARENT: u32 = u32::MAX;
 #[derive(Clone, Copy)]
 pub(super) struct State {
     pub(super) cost: f64,
+    /// True length so far, exemplar units.
+    pub(super) length: f64,
     pub(super) parent: u32,
     pub(super) descriptor: u32,
     pub(super) delta: f32,
