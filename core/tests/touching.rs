@@ -78,3 +78,14 @@ fn holes_meeting_tip_to_tip_mesh_as_one_body() {
     let region = Region::new(vec![Polygon { outer, holes: vec![right, left] }]);
     check(&region, 1);
 }
+
+#[test]
+fn a_vertex_on_another_rings_edge_meshes() {
+    // A triangle whose tip lies exactly on the middle of the square's top
+    // edge, which has no vertex there: the triangulation cannot keep that edge
+    // whole, so the tip is inserted into it and the parts separate there.
+    let square = vec![v(0.0, 0.0), v(4.0, 0.0), v(4.0, 4.0), v(0.0, 4.0)];
+    let tip = vec![v(2.0, 4.0), v(3.0, 6.0), v(1.0, 6.0)];
+    let region = Region::new(vec![Polygon { outer: square, holes: vec![] }, Polygon { outer: tip, holes: vec![] }]);
+    check(&region, 2);
+}

@@ -51,8 +51,15 @@ pub fn extrude(region: &Region, thickness_mm: f64) -> Result<Mesh, MeshError> {
     if !(thickness_mm.is_finite() && thickness_mm > 0.0) {
         return Err(MeshError::Thickness(thickness_mm));
     }
-    match extrude_exactly(region, thickness_mm) {
-        Err(MeshError::Tessellation(_)) => extrude_exactly(&repaired(region), thickness_mm),
+    match extrude_exactly(region, thickness_mm, false) {
+        Err(MeshError::Tessellation(_)) => {
+            let repaired = repaired(region);
+            match extrude_exactly(&repaired, thickness_mm, false) {
+                // Still a vertex on another ring's edge: make it a shared point.
+                Err(MeshError::Tessellation(_)) => extrude_exactly(&repaired, thickness_mm, true),
+                result => result,
+            }
+        }
         result => result,
     }
 }
@@ -108,7 +115,7 @@ fn into_own_wedge(prev: glam::DVec2, v: glam::DVec2, next: glam::DVec2) -> Optio
     (moved != v).then_some(moved)
 }
 
-fn extrude_exactly(region: &Region, thickness_mm: f64) -> Result<Mesh, MeshError> {
+fn extrude_exactly(region: &Region, thickness_mm: f64, split_junctions: bool) -> Result<Mesh, MeshError> {
     // STL stores `f32`: vertices are rounded to it first and welded by exact
     // position, so two vertices never become one only in the file.
     let mut rounded: Vec<Vec<glam::DVec2>> = region
@@ -128,6 +135,9 @@ fn extrude_exactly(region: &Region, thickness_mm: f64) -> Result<Mesh, MeshError
         })
         .filter(|r| r.len() >= 3)
         .collect();
+    if split_junctions {
+        rounded = super::split_t_junctions(&rounded);
+    }
     // Where rings touch at a point (parts meeting at a corner, two holes
     // tip to tip), a shared vertex would put four walls on one edge, so all
     // copies but one move a hair apart, each into the convex side of its own

@@ -1,10 +1,12 @@
 //! Triangle meshes: the [`Mesh`] type, extrusion of planar regions into
-//! watertight solids, and the mesh invariants.
+//! watertight solids (with their repairs), and the mesh invariants.
 
 mod extrude;
 mod sanity;
+mod t_junctions;
 mod triangle_mesh;
 
 pub use extrude::{MeshError, extrude};
 pub use sanity::MeshDefect;
+pub use t_junctions::split_t_junctions;
 pub use triangle_mesh::Mesh;
