@@ -71,3 +71,33 @@ fn bad_slicing_options_are_errors() {
     options.min_portal = -1.0;
     assert!(matches!(PieceSet::new(&exemplar, &options), Err(SliceError::InvalidOption(_))));
 }
+
+#[test]
+fn a_piece_with_hundreds_of_parts_keeps_them_apart() {
+    // 600 specks beside a bar that runs through every cut: polygon indices
+    // go far past 255, and an index that wrapped onto the bar's would count
+    // a speck as touching a portal.
+    let mut body = String::from(r#"<rect x="0" y="40" width="100" height="20"/>"#);
+    for i in 0..30 {
+        for j in 0..20 {
+            body.push_str(&format!(r#"<rect x="{}" y="{}" width="0.5" height="0.5"/>"#, 1 + i, j));
+        }
+    }
+    let svg = format!(r#"<svg xmlns="http://www.w3.org/2000/svg" viewBox="0 0 100 60">{body}</svg>"#);
+    let exemplar = tracery_core::vector_brush::Exemplar::from_svg_str(
+        "specks",
+        &svg,
+        &tracery_core::vector_brush::LoadOptions::default(),
+    )
+    .unwrap();
+    let mut options = SliceOptions::default();
+    options.mode = SlicingMode::Uniform { cuts: 2 };
+    let set = PieceSet::new(&exemplar, &options).unwrap();
+    let first = &set.pieces[0];
+    // Counted on the piece's geometry: the bar plus every speck.
+    let parts = tracery_core::geom::count_topology(&first.region).components as u32;
+    assert_eq!(parts, 601);
+    assert_eq!(first.descriptor.right().len(), 1);
+    assert_eq!(first.descriptor.closed_components(), parts - 1);
+    assert_eq!(first.descriptor.components(), parts);
+}

@@ -140,10 +140,18 @@ impl PieceSet {
                 let region = clip_to_rect(&exemplar.region, &rect);
                 let left = if i == 0 { Vec::new() } else { side_portals[i - 1].clone() };
                 let right = if i + 1 == bounds.len() - 1 { Vec::new() } else { side_portals[i].clone() };
-                let left_ids: Vec<u8> = left.iter().map(|p| polygon_of(&region, a, p, inward) as u8).collect();
-                let right_ids: Vec<u8> = right.iter().map(|p| polygon_of(&region, b, p, -inward) as u8).collect();
-                let touching = |k: usize| left_ids.contains(&(k as u8)) || right_ids.contains(&(k as u8));
-                let closed = (0..region.polygons.len()).filter(|&k| !touching(k)).count();
+                let left_polygons: Vec<usize> = left.iter().map(|p| polygon_of(&region, a, p, inward)).collect();
+                let right_polygons: Vec<usize> = right.iter().map(|p| polygon_of(&region, b, p, -inward)).collect();
+                // Dense ids for the polygons that reach a portal (at most
+                // 2 × MAX_PORTALS of them), however many the piece holds: a
+                // polygon index past 255 must not wrap onto another.
+                let mut touching: Vec<usize> = left_polygons.iter().chain(&right_polygons).copied().collect();
+                touching.sort_unstable();
+                touching.dedup();
+                let id = |k: &usize| touching.binary_search(k).unwrap_or(0) as u8;
+                let left_ids: Vec<u8> = left_polygons.iter().map(id).collect();
+                let right_ids: Vec<u8> = right_polygons.iter().map(id).collect();
+                let closed = region.polygons.len() - touching.len();
                 let descriptor =
                     TopologyDescriptor::new(&left_ids, &right_ids, closed as u16, region.hole_count() as u16);
                 Piece { index: i, u_start: a, width: b - a, region, left, right, descriptor }
