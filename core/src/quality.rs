@@ -79,21 +79,9 @@ pub fn longest_repeat(sequence: &[usize]) -> usize {
 /// assert!((max_distance_from(&region, &Curve::line(10.0).unwrap()) - 4.0).abs() < 1e-9);
 /// ```
 pub fn max_distance_from(region: &Region, curve: &Curve) -> f64 {
-    // Every vertex against every segment: a few million products for a
-    // large pattern, cheap next to synthesis, and with nothing to get wrong.
-    let points = curve.points();
-    let segments: Vec<(DVec2, DVec2)> = points.windows(2).map(|w| (w[0], w[1])).collect();
-    let distance = |p: DVec2| {
-        segments
-            .iter()
-            .map(|&(a, b)| {
-                let t = ((p - a).dot(b - a) / (b - a).length_squared().max(1e-300)).clamp(0.0, 1.0);
-                p.distance_squared(a.lerp(b, t))
-            })
-            .fold(f64::INFINITY, f64::min)
-            .sqrt()
-    };
-    region.rings().flatten().map(|&p| distance(p)).fold(0.0, f64::max)
+    // Every vertex against every segment of the curve: a few million
+    // products for a large pattern, cheap next to synthesis.
+    region.rings().flatten().map(|&p| curve.distance(p)).fold(0.0, f64::max)
 }
 
 /// The kink of the outline where it crosses each seam, degrees: at every

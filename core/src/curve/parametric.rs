@@ -249,15 +249,7 @@ impl Curve {
             let steps = ((turn.abs().to_degrees() / 3.0).ceil() as usize).max(2);
             for k in 0..=steps {
                 let a = turn * k as f64 / steps as f64;
-                let from_centre = start - centre;
-                let (sin, cos) = a.sin_cos();
-                out.push(
-                    centre
-                        + DVec2::new(
-                            from_centre.x * cos - from_centre.y * sin,
-                            from_centre.x * sin + from_centre.y * cos,
-                        ),
-                );
+                out.push(centre + DVec2::from_angle(a).rotate(start - centre));
             }
             changed = true;
         }

@@ -1,6 +1,6 @@
 //! Planar geometry shared by every mode: polygons with holes ([`Region`]),
 //! rectangles, booleans (the only user of `i_overlay`), the independent
-//! topology count, polyline resampling and SVG path flattening.
+//! topology count, polyline refinement and SVG path flattening.
 
 mod boolean;
 pub mod flatten;
@@ -12,8 +12,8 @@ mod sanity;
 mod topology;
 
 pub use boolean::{FillRule, clip_to_rect, difference, resolve_contours, union};
-pub use polygon::{Polygon, Region, ring_contains, signed_area};
-pub use polyline::{refine_mapped, resample};
+pub use polygon::{Polygon, Region, ring_contains, ring_perimeter, signed_area};
+pub use polyline::refine_mapped;
 pub use rect::Rect;
 pub use resolution::{mean_width, without_slivers};
 pub use sanity::{MIN_RING_AREA, RegionDefect};

@@ -49,6 +49,18 @@ pub fn signed_area(ring: &[DVec2]) -> f64 {
     twice * 0.5
 }
 
+/// Length of a closed ring, its closing edge included.
+///
+/// ```
+/// use glam::DVec2;
+/// let square = [DVec2::ZERO, DVec2::X, DVec2::ONE, DVec2::Y];
+/// assert_eq!(tracery_core::geom::ring_perimeter(&square), 4.0);
+/// ```
+pub fn ring_perimeter(ring: &[DVec2]) -> f64 {
+    let n = ring.len();
+    (0..n).map(|i| ring[i].distance(ring[(i + 1) % n])).sum()
+}
+
 /// Whether `p` lies inside `ring` (even-odd crossing test).
 pub fn ring_contains(ring: &[DVec2], p: DVec2) -> bool {
     let mut inside = false;

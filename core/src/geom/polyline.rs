@@ -1,28 +1,13 @@
-//! Polyline resampling.
+//! Polyline refinement under a mapping.
 
 use glam::DVec2;
-
-/// Splits the edges of a ring so that none is longer than `step`, except
-/// edges across the band (constant `u`): every mapping along a curve keeps
-/// those straight, and leaving them whole lets seams weld exactly.
-pub fn resample(ring: &[DVec2], step: f64) -> Vec<DVec2> {
-    let mut out = Vec::with_capacity(ring.len());
-    for i in 0..ring.len() {
-        let a = ring[i];
-        let b = ring[(i + 1) % ring.len()];
-        let pieces = if a.x == b.x { 1 } else { ((a.distance(b) / step).ceil() as usize).clamp(1, 10_000) };
-        for k in 0..pieces {
-            out.push(a.lerp(b, k as f64 / pieces as f64));
-        }
-    }
-    out
-}
 
 /// Maps a ring through `map`, adding points wherever the mapped edge would
 /// stray from its chord: every edge is first split into pieces no longer
 /// than `max_step`, then halved until the mapped midpoint lies within
 /// `tolerance` of the mapped chord (at most 8 halvings). Edges across the band
-/// (constant `u`) stay whole, as in [`resample`].
+/// (constant `u`) stay whole: every mapping along a curve keeps those
+/// straight, and leaving them whole lets seams weld exactly.
 ///
 /// A straight edge that `map` moves rigidly gets no new point, so the
 /// output has as many vertices as the deformation needs, not as a fixed step

@@ -6,7 +6,7 @@
 
 use glam::DVec2;
 
-use super::{Polygon, Region, signed_area};
+use super::{Polygon, Region, ring_perimeter, signed_area};
 
 /// Mean width of a ring, `2·area / perimeter`: half the width of a long thin
 /// strip, a quarter of the diameter of a disc.
@@ -18,8 +18,7 @@ use super::{Polygon, Region, signed_area};
 /// assert!((w - 0.0990).abs() < 1e-3);
 /// ```
 pub fn mean_width(ring: &[DVec2]) -> f64 {
-    let n = ring.len();
-    let perimeter: f64 = (0..n).map(|i| ring[i].distance(ring[(i + 1) % n])).sum();
+    let perimeter = ring_perimeter(ring);
     if perimeter <= 0.0 {
         return 0.0;
     }

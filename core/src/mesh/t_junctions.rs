@@ -7,6 +7,8 @@ use std::collections::HashMap;
 
 use glam::DVec2;
 
+use crate::geom::ring_perimeter;
+
 /// The rings with every vertex that lies exactly inside another edge (of any
 /// ring) inserted into that edge. Coordinates are expected to be `f32`
 /// values, so the collinearity test below is exact in `f64`.
@@ -24,8 +26,7 @@ use glam::DVec2;
 pub fn split_t_junctions(rings: &[Vec<DVec2>]) -> Vec<Vec<DVec2>> {
     let points: Vec<DVec2> = rings.iter().flatten().copied().collect();
     let edges = rings.iter().map(|r| r.len()).sum::<usize>().max(1);
-    let perimeter: f64 =
-        rings.iter().map(|r| (0..r.len()).map(|k| r[k].distance(r[(k + 1) % r.len()])).sum::<f64>()).sum();
+    let perimeter: f64 = rings.iter().map(|r| ring_perimeter(r)).sum();
     // Cells about as large as an edge: each edge looks at a few cells.
     let cell = (perimeter / edges as f64).max(f64::MIN_POSITIVE);
     let cell_of = |p: DVec2| ((p.x / cell).floor() as i64, (p.y / cell).floor() as i64);

@@ -259,11 +259,7 @@ pub fn stitch(
     };
     let mut polygons = Vec::new();
     for (i, piece) in pieces.iter().enumerate() {
-        let (x_min, x_max) = piece
-            .region
-            .rings()
-            .flatten()
-            .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), p| (lo.min(p.x), hi.max(p.x)));
+        let (x_min, x_max) = piece.region.bounds().map_or((f64::INFINITY, f64::NEG_INFINITY), |b| (b.min.x, b.max.x));
         let left_gap = if is_break(i) { (0.5 * gap - (x_min - piece.u_start)).max(0.0) } else { 0.0 };
         let right_gap = if is_break(i + 1) { (0.5 * gap - (piece.u_end() - x_max)).max(0.0) } else { 0.0 };
         let (u0, u1) = (seam_u[i] + left_gap * stretch, seam_u[i + 1] - right_gap * stretch);

@@ -14,8 +14,6 @@ use crate::vector_brush::TopologyDescriptor;
 pub struct LengthGrid {
     /// Exemplar units per step.
     pub quantum: f64,
-    /// The target length in steps.
-    pub target: u32,
 }
 
 impl LengthGrid {
@@ -28,7 +26,7 @@ impl LengthGrid {
         let epsilon = options.length_tolerance * options.target_length;
         let quantum =
             options.length_quantum.map_or_else(|| narrowest.min(epsilon / 10.0), |q| q.min(narrowest)).max(1e-12);
-        LengthGrid { quantum, target: (options.target_length / quantum).round() as u32 }
+        LengthGrid { quantum }
     }
 
     /// The key of a true length, in steps.
