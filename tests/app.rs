@@ -12,6 +12,8 @@ use tracery::worker::JobState;
 
 #[path = "common/stl.rs"]
 mod stl;
+#[path = "common/threemf.rs"]
+mod threemf;
 #[path = "common/ui.rs"]
 mod ui;
 use ui::settle;
@@ -37,6 +39,14 @@ fn drag(harness: &mut Harness<'static, TraceryApp>, points: &[Pos2]) {
         harness.step();
     }
     press(harness, *points.last().unwrap(), false);
+    harness.step();
+}
+
+/// Scrolls the side panel to the widget labelled `label`, then clicks it.
+fn click_in_side_panel(harness: &mut Harness<'static, TraceryApp>, label: &str) {
+    harness.get_by_label(label).scroll_to_me();
+    harness.run_steps(3);
+    harness.get_by_label(label).click();
     harness.step();
 }
 
@@ -135,6 +145,38 @@ fn export_writes_a_valid_stl() {
     assert_eq!(check.shells, 2, "one part per curve");
     assert!(check.triangles > 100);
     let _ = std::fs::remove_file(&path);
+}
+
+#[test]
+fn export_writes_a_3mf_with_one_object_per_curve_and_a_cut_svg() {
+    let dir = std::env::temp_dir().join(format!("tracery-app-3mf-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let (three_mf, svg) = (dir.join("pattern.3mf"), dir.join("pattern.svg"));
+    let mut harness = harness(vec![(FileKind::Export3mf, three_mf.clone()), (FileKind::ExportSvg, svg.clone())]);
+    harness.step();
+    drag(&mut harness, &circle(Pos2::new(700.0, 380.0), 90.0));
+    let wave: Vec<Pos2> =
+        (0..=30).map(|k| Pos2::new(420.0 + k as f32 * 20.0, 700.0 + 30.0 * (k as f32 / 4.0).sin())).collect();
+    drag(&mut harness, &wave);
+    settle(&mut harness);
+    click_in_side_panel(&mut harness, "Export 3MF…");
+    let bytes = std::fs::read(&three_mf).unwrap_or_else(|e| panic!("no 3MF ({e}): {:?}", harness.state().message));
+    let read = threemf::read_3mf(&bytes);
+    assert_eq!(read.unit, "millimeter");
+    let names: Vec<&str> = read.objects.iter().map(|o| o.0.as_str()).collect();
+    assert_eq!(names, ["Curve 1", "Curve 2"]);
+    assert!(read.objects.iter().all(|o| threemf::is_closed(&o.2)));
+    if let Some((manifold, objects)) = threemf::prusa_info(&three_mf) {
+        assert!(manifold);
+        assert_eq!(objects, 2);
+    }
+    // Cut flavour: only stroked outlines, in mm.
+    click_in_side_panel(&mut harness, "cutting");
+    click_in_side_panel(&mut harness, "Export SVG…");
+    let text = std::fs::read_to_string(&svg).expect("an SVG written");
+    assert!(text.contains(r#"fill="none""#) && !text.contains(r#"fill="black""#));
+    assert!(text.contains(r#"mm" height="#));
+    let _ = std::fs::remove_dir_all(&dir);
 }
 
 #[test]

@@ -7,6 +7,8 @@ use std::process::Command;
 
 #[path = "common/stl.rs"]
 mod stl;
+#[path = "common/threemf.rs"]
+mod threemf;
 use stl::check_stl;
 
 use tracery_core::vector_brush::{BUILTIN_NAMES, Exemplar, LoadOptions};
@@ -134,6 +136,8 @@ fn bad_input_gives_one_clear_line() {
         vec!["synth", "--exemplar", "lace", "--along", "rect:100"],
         vec!["synth", "--exemplar", "lace", "--along", "line:100", "--band", "0"],
         vec!["synth", "--exemplar", "lace", "--along", "line:100", "--thickness", "-1"],
+        vec!["synth", "--exemplar", "lace", "--along", "line:100", "--kerf", "-0.1"],
+        vec!["synth", "--exemplar", "lace", "--along", "line:100", "--svg-flavour", "plot"],
     ] {
         let out = tracery().args(&args).output().unwrap();
         assert!(!out.status.success(), "{args:?}");
@@ -178,6 +182,48 @@ fn curves_from_svg_and_rectangles() {
     let check = check_stl(&stl);
     assert_eq!((check.open_edges, check.shells), (0, 1), "{check:?}");
     assert!(check.triangles > 100);
+}
+
+#[test]
+fn a_pendant_goes_out_as_3mf_and_a_cut_svg() {
+    let dir = tempdir("printer");
+    let (three_mf, svg, stl) = (dir.join("p.3mf"), dir.join("p.svg"), dir.join("p.stl"));
+    let path = |p: &std::path::Path| p.display().to_string();
+    let json = synth_report(
+        &[
+            "--exemplar",
+            "chain",
+            "--along",
+            "circle:20",
+            "--closed-pattern",
+            "--3mf",
+            &path(&three_mf),
+            "--stl",
+            &path(&stl),
+            "--svg",
+            &path(&svg),
+            "--svg-flavour",
+            "cut",
+            "--kerf",
+            "0.1",
+        ],
+        &dir.join("p.json"),
+    );
+    let read = threemf::read_3mf(&std::fs::read(&three_mf).unwrap());
+    assert_eq!((read.unit.as_str(), read.objects.len()), ("millimeter", 1));
+    assert_eq!(read.objects[0].2.len(), check_stl(&stl).triangles, "the same solid as the STL");
+    assert!(threemf::is_closed(&read.objects[0].2));
+    if let Some((manifold, objects)) = threemf::prusa_info(&three_mf) {
+        assert!(manifold && objects == 1);
+    }
+    // The cut SVG has one closed hairline path per outline and hole.
+    let text = std::fs::read_to_string(&svg).unwrap();
+    let rings: usize = field(&json, "components").parse::<usize>().unwrap()
+        + field(&json, "holes").parse::<usize>().unwrap()
+        + field(&json, "loop_openings").parse::<usize>().unwrap();
+    assert_eq!(text.matches("<path").count(), rings, "{json}");
+    assert_eq!(text.matches(r#"fill="none""#).count(), rings);
+    assert_eq!(text.matches(" Z\"").count(), rings);
 }
 
 /// Runs `tracery synth ARGS --report REPORT`, which must succeed, and returns the report.

@@ -35,9 +35,11 @@ pub enum Command {
     ImportSvg,
     /// Export STL through a file dialog.
     ExportStl,
-    /// Export SVG through a file dialog.
+    /// Export 3MF (one object per curve) through a file dialog.
+    Export3mf,
+    /// Export SVG (engrave or cut, as chosen) through a file dialog.
     ExportSvg,
-    /// Export STL and SVG into the export folder, without a dialog.
+    /// Export STL, 3MF and SVG into the export folder, without a dialog.
     QuickExport,
     /// Delete the selected curve.
     Delete,
@@ -49,7 +51,7 @@ pub enum Command {
 
 impl Command {
     /// Every command, in menu order.
-    pub const ALL: [Command; 12] = [
+    pub const ALL: [Command; 13] = [
         Command::Undo,
         Command::Redo,
         Command::Open,
@@ -57,6 +59,7 @@ impl Command {
         Command::SaveAs,
         Command::ImportSvg,
         Command::ExportStl,
+        Command::Export3mf,
         Command::ExportSvg,
         Command::QuickExport,
         Command::Delete,
@@ -74,6 +77,7 @@ impl Command {
             Command::SaveAs => "Save…",
             Command::ImportSvg => "Import SVG…",
             Command::ExportStl => "Export STL…",
+            Command::Export3mf => "Export 3MF…",
             Command::ExportSvg => "Export SVG…",
             Command::QuickExport => "Quick export",
             Command::Delete => "Delete",
@@ -92,9 +96,12 @@ impl Command {
             Command::ExportStl => EXPORT_STL,
             Command::Delete => DELETE,
             Command::Deselect => DESELECT,
-            Command::SaveAs | Command::ImportSvg | Command::ExportSvg | Command::QuickExport | Command::AnotherOne => {
-                &[]
-            }
+            Command::SaveAs
+            | Command::ImportSvg
+            | Command::Export3mf
+            | Command::ExportSvg
+            | Command::QuickExport
+            | Command::AnotherOne => &[],
         }
     }
 

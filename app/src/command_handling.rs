@@ -4,7 +4,7 @@
 use std::path::Path;
 use std::time::Instant;
 
-use tracery_core::export::{region_to_svg, write_stl};
+use tracery_core::export::{ThreeMfObject, object_colour, write_3mf, write_stl, write_svg};
 use tracery_core::geom::Region;
 use tracery_core::mesh::Mesh;
 
@@ -45,6 +45,11 @@ pub fn run(app: &mut TraceryApp, command: Command) {
             Some(p) => app.export_stl_to(&p),
             None => app.message = Some(("No file chosen; Quick export writes without a dialog".into(), false)),
         },
+        Command::Export3mf => {
+            if let Some(p) = app.dialogs.pick(FileKind::Export3mf) {
+                app.export_3mf_to(&p);
+            }
+        }
         Command::ExportSvg => {
             if let Some(p) = app.dialogs.pick(FileKind::ExportSvg) {
                 app.export_svg_to(&p);
@@ -139,15 +144,17 @@ impl TraceryApp {
         }
     }
 
-    /// The finished products of the curves to export, or why they cannot be.
-    fn export_products(&self) -> Result<Vec<&tracery_core::Product>, String> {
+    /// The finished products of the curves to export, with each curve's
+    /// number as people see it (1 for the first drawn), or why they cannot be.
+    fn export_products(&self) -> Result<Vec<(usize, &tracery_core::Product)>, String> {
         let ids = self.export_ids();
         if ids.is_empty() {
             return Err("Nothing to export: draw a curve first".into());
         }
+        let number = |id: u64| self.doc.curves.iter().position(|c| c.id == id).map_or(0, |k| k + 1);
         ids.iter()
             .map(|id| match (self.worker.is_stale(*id), self.worker.state(*id)) {
-                (false, Some(JobState::Done(Ok(product)))) => Ok(product.as_ref()),
+                (false, Some(JobState::Done(Ok(product)))) => Ok((number(*id), product.as_ref())),
                 (true, _) => Err("A pattern is still being synthesized; export when the status bar says done".into()),
                 _ => Err("A curve has no pattern (see the status bar); fix or delete it before exporting".into()),
             })
@@ -158,7 +165,7 @@ impl TraceryApp {
     pub fn export_stl_to(&mut self, path: &Path) {
         let result = self.export_products().and_then(|products| {
             let mut all = Mesh::default();
-            for mesh in products.iter().filter_map(|p| p.mesh_mm.as_ref()) {
+            for mesh in products.iter().filter_map(|(_, p)| p.mesh_mm.as_ref()) {
                 all.append(mesh);
             }
             let mut bytes = Vec::new();
@@ -172,14 +179,37 @@ impl TraceryApp {
         });
     }
 
-    /// Writes the SVG of the exported curves to `path`.
+    /// Writes the 3MF of the exported curves to `path`: one object per
+    /// curve, named after it and coloured as on the canvas.
+    pub fn export_3mf_to(&mut self, path: &Path) {
+        let result = self.export_products().and_then(|products| {
+            let objects: Vec<ThreeMfObject<'_>> = products
+                .iter()
+                .filter_map(|(number, p)| {
+                    let mesh = p.mesh_mm.as_ref()?;
+                    Some(ThreeMfObject { name: format!("Curve {number}"), colour_rgb: object_colour(number - 1), mesh })
+                })
+                .collect();
+            let mut bytes = std::io::Cursor::new(Vec::new());
+            write_3mf(&objects, &mut bytes).map_err(|e| e.to_string())?;
+            write_atomically(path, bytes.get_ref()).map_err(|e| format!("{e:#}"))?;
+            Ok(objects.len())
+        });
+        self.message = Some(match result {
+            Ok(n) => (format!("Exported {n} object(s) to {}", path.display()), false),
+            Err(e) => (e, true),
+        });
+    }
+
+    /// Writes the SVG of the exported curves to `path`, engrave or cut as chosen.
     pub fn export_svg_to(&mut self, path: &Path) {
+        let options = self.state.svg;
         let result = self.export_products().and_then(|products| {
             let mut region = Region::default();
-            for p in products {
+            for (_, p) in products {
                 region.polygons.extend(p.region_mm.polygons.iter().cloned());
             }
-            write_atomically(path, region_to_svg(&region).as_bytes()).map_err(|e| format!("{e:#}"))
+            write_atomically(path, write_svg(&region, &options).as_bytes()).map_err(|e| format!("{e:#}"))
         });
         self.message = Some(match result {
             Ok(()) => (format!("Exported {}", path.display()), false),
@@ -187,7 +217,7 @@ impl TraceryApp {
         });
     }
 
-    /// Writes STL and SVG into the export folder under a new name.
+    /// Writes STL, 3MF and SVG into the export folder under a new name.
     pub fn quick_export(&mut self) {
         let folder = self.state.export_folder.clone();
         if let Err(e) = std::fs::create_dir_all(&folder) {
@@ -198,8 +228,13 @@ impl TraceryApp {
         let stl = folder.join(format!("tracery-{stamp}.stl"));
         self.export_stl_to(&stl);
         if matches!(self.message, Some((_, false))) {
+            self.export_3mf_to(&folder.join(format!("tracery-{stamp}.3mf")));
+        }
+        if matches!(self.message, Some((_, false))) {
             self.export_svg_to(&folder.join(format!("tracery-{stamp}.svg")));
-            self.message = Some((format!("Exported {} and .svg", stl.display()), false));
+        }
+        if matches!(self.message, Some((_, false))) {
+            self.message = Some((format!("Exported {} and .3mf, .svg", stl.display()), false));
         }
     }
 

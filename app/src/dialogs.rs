@@ -13,6 +13,8 @@ pub enum FileKind {
     SaveProject,
     /// Where to write an STL.
     ExportStl,
+    /// Where to write a 3MF.
+    Export3mf,
     /// Where to write an SVG.
     ExportSvg,
 }
@@ -37,6 +39,7 @@ impl Dialogs for SystemDialogs {
                 dialog.add_filter("Tracery project", &["ron"]).set_file_name("pattern.ron").save_file()
             }
             FileKind::ExportStl => dialog.add_filter("STL", &["stl"]).set_file_name("pattern.stl").save_file(),
+            FileKind::Export3mf => dialog.add_filter("3MF", &["3mf"]).set_file_name("pattern.3mf").save_file(),
             FileKind::ExportSvg => dialog.add_filter("SVG", &["svg"]).set_file_name("pattern.svg").save_file(),
         }
     }

@@ -7,6 +7,7 @@ use std::sync::Arc;
 
 use serde::{Deserialize, Serialize};
 use tracery_core::curve::Curve;
+use tracery_core::export::SvgOptions;
 use tracery_core::vector_brush::{Exemplar, SlicingMode};
 
 use crate::canvas::View;
@@ -34,6 +35,8 @@ pub struct Persisted {
     pub export_selected_only: bool,
     /// Where "Quick export" writes, for desktops without file dialogs.
     pub export_folder: PathBuf,
+    /// What an exported SVG is for (engrave or cut) and the laser's kerf.
+    pub svg: SvgOptions,
     /// The 3D preview's camera.
     pub orbit: Orbit,
     /// The project file, once saved or opened.
@@ -51,6 +54,7 @@ impl Default for Persisted {
             show_3d: false,
             export_selected_only: false,
             export_folder: default_export_folder(),
+            svg: SvgOptions::default(),
             orbit: Orbit::default(),
             project_path: None,
         }

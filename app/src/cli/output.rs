@@ -6,7 +6,7 @@ use std::path::PathBuf;
 use anyhow::{Result, bail};
 use serde::Serialize;
 use tracery_core::Product;
-use tracery_core::export::{region_to_svg, write_stl};
+use tracery_core::export::{SvgFlavour, SvgOptions, ThreeMfObject, object_colour, write_3mf, write_stl, write_svg};
 use tracery_core::product::Facts;
 use tracery_core::report::{Timings, Warning};
 
@@ -21,12 +21,40 @@ pub struct OutputArgs {
     /// Binary STL output (millimetres).
     #[arg(long)]
     pub stl: Option<PathBuf>,
+    /// 3MF output (millimetres): the pattern as one named, coloured object.
+    #[arg(long = "3mf", value_name = "3MF")]
+    pub three_mf: Option<PathBuf>,
     /// SVG output (millimetres).
     #[arg(long)]
     pub svg: Option<PathBuf>,
+    /// What the SVG is for: "engrave" (filled shapes) or "cut" (hairline outlines for a laser, holes first) [default: engrave].
+    #[arg(long, value_parser = parse_flavour)]
+    pub svg_flavour: Option<SvgFlavour>,
+    /// Laser kerf, mm: cut outlines move out and holes move in by half of it [default: 0].
+    #[arg(long)]
+    pub kerf: Option<f64>,
     /// JSON report output: topology, `timings_ms`, `warnings` and the mode's figures.
     #[arg(long)]
     pub report: Option<PathBuf>,
+}
+
+fn parse_flavour(s: &str) -> Result<SvgFlavour, String> {
+    match s {
+        "engrave" => Ok(SvgFlavour::Engrave),
+        "cut" => Ok(SvgFlavour::Cut),
+        _ => Err(format!("'{s}' is not 'engrave' or 'cut'")),
+    }
+}
+
+impl OutputArgs {
+    /// The SVG options these flags ask for.
+    pub fn svg_options(&self) -> Result<SvgOptions> {
+        let kerf_mm = self.kerf.unwrap_or(0.0);
+        if !(0.0..=5.0).contains(&kerf_mm) {
+            bail!("--kerf must be between 0 and 5 mm, not {kerf_mm}");
+        }
+        Ok(SvgOptions::new(self.svg_flavour.unwrap_or_default()).with_kerf_mm(kerf_mm))
+    }
 }
 
 /// What `--report` writes.
@@ -65,10 +93,16 @@ pub fn write_outputs(mode: &'static str, exemplar: &str, args: &OutputArgs, prod
     if let Some(mesh) = &product.mesh_mm {
         write_stl(mesh, &mut stl)?;
         (triangles, shells) = (mesh.triangles.len(), mesh.shell_count());
-    } else if args.stl.is_some() {
-        bail!("this mode makes no solid to write as STL");
+    } else if args.stl.is_some() || args.three_mf.is_some() {
+        bail!("this mode makes no solid to write as STL or 3MF");
     }
-    let svg = region_to_svg(&product.region_mm);
+    let mut three_mf = std::io::Cursor::new(Vec::new());
+    if let (Some(_), Some(mesh)) = (&args.three_mf, &product.mesh_mm) {
+        let object =
+            ThreeMfObject { name: format!("{exemplar} along {}", args.along), colour_rgb: object_colour(0), mesh };
+        write_3mf(&[object], &mut three_mf)?;
+    }
+    let svg = write_svg(&product.region_mm, &args.svg_options()?);
     let report = Report {
         mode,
         exemplar: exemplar.to_string(),
@@ -85,6 +119,9 @@ pub fn write_outputs(mode: &'static str, exemplar: &str, args: &OutputArgs, prod
     let json = serde_json::to_string_pretty(&report)?;
     if let Some(path) = &args.stl {
         write_atomically(path, &stl)?;
+    }
+    if let Some(path) = &args.three_mf {
+        write_atomically(path, three_mf.get_ref())?;
     }
     if let Some(path) = &args.svg {
         write_atomically(path, svg.as_bytes())?;

@@ -106,6 +106,7 @@ pub fn load_exemplar(spec: &str) -> Result<Exemplar> {
 pub fn run(args: SynthArgs) -> Result<()> {
     let settings = args.settings();
     settings.validate()?;
+    args.output.svg_options()?;
     let exemplar = load_exemplar(&args.exemplar)?;
     let along = Along::parse(&args.output.along)?;
     let product = make_product(&exemplar, &along, &settings, &Control::default())?;

@@ -3,6 +3,7 @@
 use std::path::PathBuf;
 
 use egui::RichText;
+use tracery_core::export::{SvgFlavour, SvgOptions};
 
 use crate::TraceryApp;
 use crate::command::Command;
@@ -14,17 +15,18 @@ const FOLDER_FIELD_WIDTH: f32 = 150.0;
 pub fn files_ui(app: &mut TraceryApp, ui: &mut egui::Ui) {
     ui.label(RichText::new("Files").strong());
     ui.horizontal_wrapped(|ui| {
-        for command in [Command::Open, Command::SaveAs, Command::ExportStl, Command::ExportSvg] {
+        for command in [Command::Open, Command::SaveAs, Command::ExportStl, Command::Export3mf, Command::ExportSvg] {
             if command.button(ui, true) {
                 app.queue(command);
             }
         }
     });
     ui.checkbox(&mut app.state.export_selected_only, "Export the selected curve only");
+    svg_options_ui(ui, &mut app.state.svg);
     ui.horizontal(|ui| {
         if ui
             .button(Command::QuickExport.label())
-            .on_hover_text("Writes STL and SVG into the folder below, without a dialog")
+            .on_hover_text("Writes STL, 3MF and SVG into the folder below, without a dialog")
             .clicked()
         {
             app.queue(Command::QuickExport);
@@ -44,4 +46,28 @@ pub fn files_ui(app: &mut TraceryApp, ui: &mut egui::Ui) {
             }
         }
     });
+}
+
+/// The SVG's purpose (engrave or cut) and the laser's kerf.
+fn svg_options_ui(ui: &mut egui::Ui, options: &mut SvgOptions) {
+    ui.horizontal(|ui| {
+        ui.label("SVG for");
+        for (flavour, name, hint) in [
+            (SvgFlavour::Engrave, "engraving", "Filled shapes"),
+            (SvgFlavour::Cut, "cutting", "Hairline outlines in red, holes before the outline around them"),
+        ] {
+            let selected = options.flavour == flavour;
+            let response = ui.selectable_label(selected, name).on_hover_text(hint);
+            if response.clicked() {
+                options.flavour = flavour;
+            }
+        }
+    });
+    if options.flavour == SvgFlavour::Cut {
+        ui.horizontal(|ui| {
+            let label = ui.label("Kerf");
+            let field = egui::DragValue::new(&mut options.kerf_mm).range(0.0..=2.0).speed(0.01).suffix(" mm");
+            ui.add(field).labelled_by(label.id).on_hover_text("Outlines move out and holes move in by half the kerf");
+        });
+    }
 }

@@ -1,7 +1,25 @@
-//! File writers: SVG for regions, binary STL for meshes.
+//! File writers: SVG for regions (filled or laser cut paths), binary STL and
+//! 3MF for meshes.
 
 mod stl;
 mod svg;
+mod threemf;
 
 pub use stl::write_stl;
-pub use svg::region_to_svg;
+pub use svg::{CUT_COLOUR, HAIRLINE_MM, SvgFlavour, SvgOptions, region_to_svg, write_svg};
+pub use threemf::{OBJECT_COLOURS, ThreeMfObject, object_colour, write_3mf};
+
+/// Why a file could not be written.
+#[derive(Debug, thiserror::Error)]
+#[non_exhaustive]
+pub enum ExportError {
+    /// Nothing with triangles to write.
+    #[error("nothing to export: no pattern has a solid yet")]
+    Empty,
+    /// Writing failed.
+    #[error("could not write the file: {0}")]
+    Io(#[from] std::io::Error),
+    /// The zip container could not be made.
+    #[error("could not write the 3MF package: {0}")]
+    Zip(#[from] zip::result::ZipError),
+}

@@ -1,12 +1,66 @@
-//! SVG output of a planar pattern, for laser cutting.
+//! SVG output of a planar pattern, in millimetres: filled for engraving or
+//! viewing, or hairline cut paths for a laser.
 
 use std::fmt::Write;
 
-use crate::geom::{Rect, Region};
+use glam::DVec2;
+use serde::{Deserialize, Serialize};
 
-/// The region as an SVG document in millimetres: one filled path per
-/// component (outer ring and holes, `evenodd`), with a `viewBox` framing the
-/// pattern and a small margin. SVG's `y` points down, so `y` is flipped.
+use crate::geom::{Rect, Region, offset, union};
+
+/// Stroke colour of cut paths: laser software maps a colour to an operation.
+pub const CUT_COLOUR: &str = "#FF0000";
+/// Stroke width of cut paths, mm: a hairline, which laser software reads as "cut".
+pub const HAIRLINE_MM: f64 = 0.01;
+/// Margin around the pattern, mm.
+const MARGIN_MM: f64 = 1.0;
+/// Coordinates are written to 0.1 µm; points closer than that are one point.
+const DECIMALS: usize = 4;
+
+/// What the SVG is for.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize, Deserialize)]
+#[non_exhaustive]
+pub enum SvgFlavour {
+    /// Filled shapes (`evenodd`), for engraving, printing or viewing.
+    #[default]
+    Engrave,
+    /// Closed outlines as hairline strokes with no fill, holes before the
+    /// outline around them, so a laser cuts inner parts before it frees the
+    /// part that holds them.
+    Cut,
+}
+
+/// How to write an SVG.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
+#[non_exhaustive]
+#[serde(default)]
+pub struct SvgOptions {
+    /// Filled or cut paths.
+    pub flavour: SvgFlavour,
+    /// Laser kerf, mm: outlines move out and holes move in by half of it,
+    /// so that the cut part keeps its drawn size. Zero for none.
+    pub kerf_mm: f64,
+}
+
+impl Default for SvgOptions {
+    fn default() -> Self {
+        SvgOptions { flavour: SvgFlavour::Engrave, kerf_mm: 0.0 }
+    }
+}
+
+impl SvgOptions {
+    /// Options for `flavour` with no kerf.
+    pub fn new(flavour: SvgFlavour) -> Self {
+        SvgOptions { flavour, ..SvgOptions::default() }
+    }
+
+    /// With a kerf of `kerf_mm`.
+    pub fn with_kerf_mm(self, kerf_mm: f64) -> Self {
+        SvgOptions { kerf_mm, ..self }
+    }
+}
+
+/// The region as a filled SVG in millimetres ([`SvgFlavour::Engrave`]).
 ///
 /// ```
 /// use tracery_core::export::region_to_svg;
@@ -21,26 +75,88 @@ use crate::geom::{Rect, Region};
 /// assert!(svg.contains("evenodd") && svg.contains("viewBox"));
 /// ```
 pub fn region_to_svg(region: &Region) -> String {
-    let bounds = region.bounds().unwrap_or(Rect::new(glam::DVec2::ZERO, glam::DVec2::ONE));
-    let margin = 0.02 * bounds.size().max_element().max(1.0);
-    let r = bounds.inflate(margin);
-    let (w, h) = (r.width(), r.height());
+    write_svg(region, &SvgOptions::default())
+}
+
+/// The region as an SVG document: `width` and `height` in mm and a
+/// `viewBox` of the same numbers from 0, so one user unit is one
+/// millimetre, and no transforms (`y` is flipped in the coordinates).
+///
+/// The cut flavour unions the region first (patterns of several curves may
+/// overlap), applies the kerf, and writes each ring as its own closed path:
+/// holes of a part, then its outline.
+///
+/// ```
+/// use tracery_core::export::{SvgFlavour, SvgOptions, write_svg};
+/// use tracery_core::DVec2;
+/// use tracery_core::geom::{Polygon, Region};
+/// let square = |s: f64| vec![DVec2::new(-s, -s), DVec2::new(s, -s), DVec2::new(s, s), DVec2::new(-s, s)];
+/// let mut hole = square(1.0);
+/// hole.reverse();
+/// let frame = Region::new(vec![Polygon { outer: square(2.0), holes: vec![hole] }]);
+/// let svg = write_svg(&frame, &SvgOptions::new(SvgFlavour::Cut));
+/// assert_eq!(svg.matches("<path").count(), 2);
+/// assert!(svg.contains(r#"fill="none""#) && !svg.contains("transform"));
+/// ```
+pub fn write_svg(region: &Region, options: &SvgOptions) -> String {
+    let region = match options.flavour {
+        SvgFlavour::Engrave if options.kerf_mm == 0.0 => region.clone(),
+        _ => offset(&union(&[region]), options.kerf_mm / 2.0),
+    };
+    let bounds = region.bounds().unwrap_or(Rect::new(DVec2::ZERO, DVec2::ONE)).inflate(MARGIN_MM);
+    let (w, h) = (bounds.width(), bounds.height());
+    // Plane (mm, y up) to the page (mm, y down, origin at the top left).
+    let to_page = |p: DVec2| DVec2::new(p.x - bounds.min.x, bounds.max.y - p.y);
     let mut svg = String::new();
     let _ = writeln!(
         svg,
-        r#"<svg xmlns="http://www.w3.org/2000/svg" width="{w:.3}mm" height="{h:.3}mm" viewBox="{:.4} {:.4} {w:.4} {h:.4}">"#,
-        r.min.x, -r.max.y
+        r#"<svg xmlns="http://www.w3.org/2000/svg" width="{w:.3}mm" height="{h:.3}mm" viewBox="0 0 {w:.3} {h:.3}">"#
     );
-    for polygon in &region.polygons {
-        let mut d = String::new();
-        for ring in polygon.rings() {
-            for (k, p) in ring.iter().enumerate() {
-                let _ = write!(d, "{}{:.6},{:.6} ", if k == 0 { 'M' } else { 'L' }, p.x, -p.y);
+    match options.flavour {
+        SvgFlavour::Engrave => {
+            let _ = writeln!(svg, r#"  <g id="engrave">"#);
+            for polygon in &region.polygons {
+                let d: Vec<String> = polygon.rings().filter_map(|r| ring_path(r, to_page)).collect();
+                if !d.is_empty() {
+                    let _ = writeln!(svg, r#"    <path fill="black" fill-rule="evenodd" d="{}"/>"#, d.join(" "));
+                }
             }
-            d.push_str("Z ");
         }
-        let _ = writeln!(svg, r#"  <path fill="black" fill-rule="evenodd" d="{}"/>"#, d.trim_end());
+        SvgFlavour::Cut => {
+            let _ = writeln!(svg, r#"  <g id="cut">"#);
+            for polygon in &region.polygons {
+                for ring in polygon.holes.iter().chain(std::iter::once(&polygon.outer)) {
+                    if let Some(d) = ring_path(ring, to_page) {
+                        let _ = writeln!(
+                            svg,
+                            r#"    <path fill="none" stroke="{CUT_COLOUR}" stroke-width="{HAIRLINE_MM}" d="{d}"/>"#
+                        );
+                    }
+                }
+            }
+        }
     }
-    svg.push_str("</svg>\n");
+    svg.push_str("  </g>\n</svg>\n");
     svg
+}
+
+/// One closed subpath, with points that round to the same written
+/// coordinates merged, so no segment has zero length. `None` when fewer
+/// than three distinct points remain.
+fn ring_path(ring: &[DVec2], to_page: impl Fn(DVec2) -> DVec2) -> Option<String> {
+    let mut points: Vec<String> = Vec::with_capacity(ring.len());
+    for p in ring {
+        let q = to_page(*p);
+        let text = format!("{:.DECIMALS$},{:.DECIMALS$}", q.x, q.y);
+        if points.last() != Some(&text) {
+            points.push(text);
+        }
+    }
+    while points.len() > 1 && points.first() == points.last() {
+        points.pop();
+    }
+    if points.len() < 3 {
+        return None;
+    }
+    Some(format!("M{} Z", points.join(" L")))
 }

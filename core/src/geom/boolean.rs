@@ -36,7 +36,7 @@ impl From<FillRule> for OverlayFill {
     }
 }
 
-type Contour = Vec<[f64; 2]>;
+pub(super) type Contour = Vec<[f64; 2]>;
 
 fn to_contour(ring: &[DVec2]) -> Contour {
     ring.iter().map(|p| [p.x, p.y]).collect()
@@ -46,7 +46,7 @@ fn region_contours(region: &Region) -> Vec<Contour> {
     region.rings().map(|r| to_contour(r)).collect()
 }
 
-fn from_shapes(shapes: Vec<Vec<Vec<[f64; 2]>>>) -> Region {
+pub(super) fn from_shapes(shapes: Vec<Vec<Vec<[f64; 2]>>>) -> Region {
     let ring = |c: Vec<[f64; 2]>| c.into_iter().map(|[x, y]| DVec2::new(x, y)).collect::<Vec<_>>();
     let extent = shapes.iter().flatten().flatten().fold(0.0f64, |m, p| m.max(p[0].abs()).max(p[1].abs()));
     // Rings of no area (collinear slivers left where two edges meet) are

@@ -4,6 +4,7 @@
 
 mod boolean;
 pub mod flatten;
+mod offset;
 mod polygon;
 mod polyline;
 mod rect;
@@ -12,6 +13,7 @@ mod sanity;
 mod topology;
 
 pub use boolean::{FillRule, clip_to_rect, difference, resolve_contours, union};
+pub use offset::{OFFSET_ARC_TOLERANCE_MM, offset};
 pub use polygon::{Polygon, Region, ring_contains, ring_perimeter, signed_area};
 pub use polyline::refine_mapped;
 pub use rect::Rect;
