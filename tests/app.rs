@@ -119,8 +119,7 @@ fn export_writes_a_valid_stl() {
     drag(&mut harness, &wave);
     settle(&mut harness);
     assert_eq!(harness.state().doc.curves.len(), 2);
-    harness.get_by_label("Export STL…").click();
-    harness.step();
+    click_in_side_panel(&mut harness, "Export STL…");
     let states: Vec<String> = harness
         .state()
         .doc
@@ -164,7 +163,7 @@ fn export_writes_a_3mf_with_one_object_per_curve_and_a_cut_svg() {
     let read = threemf::read_3mf(&bytes);
     assert_eq!(read.unit, "millimeter");
     let names: Vec<&str> = read.objects.iter().map(|o| o.0.as_str()).collect();
-    assert_eq!(names, ["Curve 1", "Curve 2"]);
+    assert_eq!(names, ["Curve 0", "Curve 1"], "named as on screen");
     assert!(read.objects.iter().all(|o| threemf::is_closed(&o.2)));
     if let Some((manifold, objects)) = threemf::prusa_info(&three_mf) {
         assert!(manifold);
@@ -188,8 +187,7 @@ fn a_broken_svg_import_shows_an_error_and_changes_nothing() {
     drag(&mut harness, &circle(Pos2::new(700.0, 400.0), 80.0));
     settle(&mut harness);
     let before = harness.state().doc.clone();
-    harness.get_by_label("Import SVG…").click();
-    harness.step();
+    click_in_side_panel(&mut harness, "Import SVG…");
     harness.step();
     let app = harness.state();
     assert_eq!(app.doc, before, "the document is unchanged");

@@ -10,7 +10,7 @@ use tracery_core::DVec2;
 use crate::command::Command;
 use crate::dialogs::{Dialogs, SystemDialogs};
 use crate::document::{Document, History, ModeSettings};
-use crate::modes::{JobError, ModeJob, mode_ui};
+use crate::modes::{CurveJob, JobError, mode_ui};
 use crate::panels::{preview_3d, side_panel, status, top_bar};
 use crate::state::{Caches, Persisted};
 use crate::tools::Gesture;
@@ -46,7 +46,7 @@ pub struct TraceryApp {
     pub(crate) history: History,
     pub(crate) state: Persisted,
     pub(crate) caches: Caches,
-    pub(crate) worker: Worker<ModeJob>,
+    pub(crate) worker: Worker<CurveJob>,
     pub(crate) gesture: Option<Gesture>,
     pub(crate) dialogs: Box<dyn Dialogs>,
     pub(crate) autosave: Autosave,
@@ -152,7 +152,7 @@ impl TraceryApp {
         for item in &self.doc.curves {
             let Some(curve) = self.caches.smoothed(item.id).cloned() else { continue };
             match mode_ui(&item.mode).job(&curve, &item.mode, &self.doc, &mut self.caches) {
-                Ok(job) => self.worker.want(item.id, job, now),
+                Ok(mode) => self.worker.want(item.id, CurveJob { mode, print: self.doc.print }, now),
                 Err(e) => self.message = Some((e.to_string(), true)),
             }
         }

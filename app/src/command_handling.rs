@@ -144,17 +144,16 @@ impl TraceryApp {
         }
     }
 
-    /// The finished products of the curves to export, with each curve's
-    /// number as people see it (1 for the first drawn), or why they cannot be.
-    fn export_products(&self) -> Result<Vec<(usize, &tracery_core::Product)>, String> {
+    /// The finished products of the curves to export, with each curve's id
+    /// (its name on screen is "Curve ID"), or why they cannot be.
+    fn export_products(&self) -> Result<Vec<(u64, &tracery_core::Product)>, String> {
         let ids = self.export_ids();
         if ids.is_empty() {
             return Err("Nothing to export: draw a curve first".into());
         }
-        let number = |id: u64| self.doc.curves.iter().position(|c| c.id == id).map_or(0, |k| k + 1);
         ids.iter()
             .map(|id| match (self.worker.is_stale(*id), self.worker.state(*id)) {
-                (false, Some(JobState::Done(Ok(product)))) => Ok((number(*id), product.as_ref())),
+                (false, Some(JobState::Done(Ok(product)))) => Ok((*id, product.as_ref())),
                 (true, _) => Err("A pattern is still being synthesized; export when the status bar says done".into()),
                 _ => Err("A curve has no pattern (see the status bar); fix or delete it before exporting".into()),
             })
@@ -185,9 +184,10 @@ impl TraceryApp {
         let result = self.export_products().and_then(|products| {
             let objects: Vec<ThreeMfObject<'_>> = products
                 .iter()
-                .filter_map(|(number, p)| {
+                .enumerate()
+                .filter_map(|(k, (id, p))| {
                     let mesh = p.mesh_mm.as_ref()?;
-                    Some(ThreeMfObject { name: format!("Curve {number}"), colour_rgb: object_colour(number - 1), mesh })
+                    Some(ThreeMfObject { name: format!("Curve {id}"), colour_rgb: object_colour(k), mesh })
                 })
                 .collect();
             let mut bytes = std::io::Cursor::new(Vec::new());

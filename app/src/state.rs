@@ -31,6 +31,8 @@ pub struct Persisted {
     pub show_seams: bool,
     /// Show the 3D preview.
     pub show_3d: bool,
+    /// Highlight thin features, narrow gaps and weak bridges on the canvas.
+    pub show_print_flaws: bool,
     /// Export only the selected curve.
     pub export_selected_only: bool,
     /// Where "Quick export" writes, for desktops without file dialogs.
@@ -52,6 +54,7 @@ impl Default for Persisted {
             show_band: true,
             show_seams: false,
             show_3d: false,
+            show_print_flaws: true,
             export_selected_only: false,
             export_folder: default_export_folder(),
             svg: SvgOptions::default(),

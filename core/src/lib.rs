@@ -10,6 +10,8 @@
 //! - [`export`]: SVG and STL writers.
 //! - [`control`]: cancellation, progress, state caps, and [`control::Cancelled`].
 //! - [`report`]: typed [`report::Warning`]s and [`report::Timings`].
+//! - [`print`]: printability on the final planar geometry (thin features,
+//!   narrow gaps, weak bridges) and thickening.
 //! - [`product`]: the [`Product`] every mode returns; the app's canvas, 3D
 //!   preview, export and the command-line report consume only it.
 //!
@@ -27,6 +29,7 @@ pub mod curve;
 pub mod export;
 pub mod geom;
 pub mod mesh;
+pub mod print;
 pub mod product;
 pub mod quality;
 pub mod report;

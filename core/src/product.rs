@@ -122,4 +122,6 @@ pub struct Product {
     pub timings: Timings,
     /// Mode-specific figures for reports.
     pub facts: Facts,
+    /// What a nozzle can print of it, once checked ([`crate::print::finish`]).
+    pub printability: Option<crate::print::Printability>,
 }

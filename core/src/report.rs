@@ -40,6 +40,50 @@ pub enum Warning {
         /// Holes counted on the final geometry.
         counted_holes: usize,
     },
+    /// Features thinner than the nozzle: the slicer would drop them.
+    ThinFeatures {
+        /// How many.
+        count: usize,
+        /// The thinnest, mm.
+        width_mm: f64,
+        /// The nozzle, mm.
+        nozzle_mm: f64,
+    },
+    /// Gaps narrower than the nozzle: they would print closed.
+    NarrowGaps {
+        /// How many.
+        count: usize,
+        /// The narrowest, mm.
+        width_mm: f64,
+        /// The nozzle, mm.
+        nozzle_mm: f64,
+    },
+    /// Bridges between pieces narrower than the limit.
+    WeakBridges {
+        /// How many.
+        count: usize,
+        /// The weakest, mm.
+        width_mm: f64,
+        /// The limit, mm.
+        limit_mm: f64,
+    },
+    /// The pattern is only a few layers thick.
+    FewLayers {
+        /// Layers in its thickness.
+        layers: f64,
+    },
+    /// Thickening thin features joined parts or closed holes.
+    ThickeningChangedTopology {
+        /// Components before and after.
+        components: (usize, usize),
+        /// Holes (loop openings included) before and after.
+        holes: (usize, usize),
+    },
+    /// The thickened pattern could not be made solid; the pattern is as synthesized.
+    ThickeningFailed {
+        /// Why.
+        reason: String,
+    },
 }
 
 impl std::fmt::Display for Warning {
@@ -64,6 +108,27 @@ impl std::fmt::Display for Warning {
                     "the final geometry has {counted_components} component(s) and {counted_holes} hole(s), not the {planned_components} and {planned_holes} planned: the band touches itself"
                 )
             }
+            Warning::ThinFeatures { count, width_mm, nozzle_mm } => write!(
+                f,
+                "{count} feature(s) thinner than the {nozzle_mm} mm nozzle (thinnest {width_mm:.2} mm): thicken them, or widen the band"
+            ),
+            Warning::NarrowGaps { count, width_mm, nozzle_mm } => write!(
+                f,
+                "{count} gap(s) narrower than the {nozzle_mm} mm nozzle (narrowest {width_mm:.2} mm): they may print closed"
+            ),
+            Warning::WeakBridges { count, width_mm, limit_mm } => write!(
+                f,
+                "{count} bridge(s) between pieces narrower than {limit_mm:.2} mm (weakest {width_mm:.2} mm): raise the minimum portal width"
+            ),
+            Warning::FewLayers { layers } => {
+                write!(f, "the pattern is only {layers:.1} layers thick: make it thicker or the layers thinner")
+            }
+            Warning::ThickeningChangedTopology { components, holes } => write!(
+                f,
+                "thickening changed the topology: {} → {} component(s), {} → {} hole(s)",
+                components.0, components.1, holes.0, holes.1
+            ),
+            Warning::ThickeningFailed { reason } => write!(f, "thin features were left as they are: {reason}"),
         }
     }
 }

@@ -133,6 +133,11 @@ fn paint_document(app: &TraceryApp, ui: &egui::Ui, painter: &egui::Painter, rect
             let color = if stale { ink.gamma_multiply(0.45) } else { ink };
             painter.add(fill(&view, rect, &product.fill_mm, color));
             modes::mode_ui(&item.mode).overlays_ui(painter, &view, rect, product, toggles);
+            if app.state.show_print_flaws
+                && let Some(found) = &product.printability
+            {
+                paint::print_flaws(painter, &view, rect, found);
+            }
         }
         if let Some(curve) = app.caches.smoothed(item.id) {
             let color = if selected { SELECTION } else { SELECTION.gamma_multiply(0.43) };

@@ -26,3 +26,28 @@ pub fn fill(view: &View, rect: Rect, triangles: &[[DVec2; 3]], color: Color32) -
     }
     Shape::mesh(mesh)
 }
+
+/// Thin features (red), narrow gaps (blue) and weak bridges (orange): each
+/// narrow cross-section drawn across, and a ring where each is narrowest,
+/// large enough to find at any zoom.
+pub fn print_flaws(painter: &egui::Painter, view: &View, rect: Rect, found: &tracery_core::print::Printability) {
+    const THIN: Color32 = Color32::from_rgb(230, 40, 40);
+    const GAP: Color32 = Color32::from_rgb(40, 120, 240);
+    const BRIDGE: Color32 = Color32::from_rgb(245, 150, 0);
+    let ring = |at: DVec2, colour: Color32| {
+        painter.circle_stroke(view.to_screen(rect, at), 9.0, Stroke::new(2.0, colour));
+    };
+    for (flaws, colour) in [(&found.thin_features, THIN), (&found.narrow_gaps, GAP)] {
+        for flaw in flaws {
+            for [a, b] in &flaw.spans_mm {
+                painter.line_segment([view.to_screen(rect, *a), view.to_screen(rect, *b)], Stroke::new(1.5, colour));
+            }
+            ring(flaw.at_mm, colour);
+        }
+    }
+    for bridge in &found.weak_bridges {
+        let [a, b] = bridge.ends_mm;
+        painter.line_segment([view.to_screen(rect, a), view.to_screen(rect, b)], Stroke::new(3.0, BRIDGE));
+        ring(bridge.at_mm, BRIDGE);
+    }
+}

@@ -7,6 +7,7 @@ use anyhow::{Result, bail};
 use serde::Serialize;
 use tracery_core::Product;
 use tracery_core::export::{SvgFlavour, SvgOptions, ThreeMfObject, object_colour, write_3mf, write_stl, write_svg};
+use tracery_core::print::{PrintSettings, Printability};
 use tracery_core::product::Facts;
 use tracery_core::report::{Timings, Warning};
 
@@ -33,9 +34,41 @@ pub struct OutputArgs {
     /// Laser kerf, mm: cut outlines move out and holes move in by half of it [default: 0].
     #[arg(long)]
     pub kerf: Option<f64>,
-    /// JSON report output: topology, `timings_ms`, `warnings` and the mode's figures.
+    /// JSON report output: topology, printability, `timings_ms`, `warnings` and the mode's figures.
     #[arg(long)]
     pub report: Option<PathBuf>,
+    #[command(flatten)]
+    pub print: PrintArgs,
+}
+
+/// The printer the pattern is checked against.
+#[derive(clap::Args, Debug, Clone, PartialEq)]
+pub struct PrintArgs {
+    /// Nozzle diameter, mm: thinner features and narrower gaps are reported [default: 0.4].
+    #[arg(long)]
+    pub nozzle: Option<f64>,
+    /// Layer height, mm [default: 0.2].
+    #[arg(long)]
+    pub layer_height: Option<f64>,
+    /// Thicken features thinner than the nozzle to its width (the topology is counted again).
+    #[arg(long)]
+    pub thicken: bool,
+    /// Flag bridges between pieces narrower than this many nozzle widths [default: 1.5].
+    #[arg(long)]
+    pub weak_bridge: Option<f64>,
+}
+
+impl PrintArgs {
+    /// The print settings these flags ask for: the defaults, with each given flag applied.
+    pub fn settings(&self) -> Result<PrintSettings> {
+        let mut s = PrintSettings::default();
+        s.nozzle_mm = self.nozzle.unwrap_or(s.nozzle_mm);
+        s.layer_height_mm = self.layer_height.unwrap_or(s.layer_height_mm);
+        s.thicken = self.thicken;
+        s.bridge_nozzles = self.weak_bridge.unwrap_or(s.bridge_nozzles);
+        s.validate()?;
+        Ok(s)
+    }
 }
 
 fn parse_flavour(s: &str) -> Result<SvgFlavour, String> {
@@ -79,6 +112,9 @@ pub struct Report<'a> {
     pub stl_triangles: usize,
     /// Shells in the STL.
     pub stl_shells: usize,
+    /// What the nozzle can print: `thinnest_feature_mm`, `narrowest_gap_mm`,
+    /// and every thin feature, narrow gap and weak bridge with its place.
+    pub printability: Option<&'a Printability>,
     /// Milliseconds per stage.
     pub timings_ms: &'a Timings,
     /// What the person should know.
@@ -113,6 +149,7 @@ pub fn write_outputs(mode: &'static str, exemplar: &str, args: &OutputArgs, prod
         facts: &product.facts,
         stl_triangles: triangles,
         stl_shells: shells,
+        printability: product.printability.as_ref(),
         timings_ms: &product.timings,
         warnings: &product.warnings,
     };

@@ -125,6 +125,7 @@ impl From<DocumentV0> for Document {
                 .collect(),
             imported: old.imported,
             next_id: old.next_id,
+            ..Document::default()
         }
     }
 }

@@ -11,6 +11,7 @@ pub use history::History;
 use serde::{Deserialize, Serialize};
 use tracery_core::DVec2;
 use tracery_core::curve::Curve;
+use tracery_core::print::PrintSettings;
 use tracery_core::vector_brush::{self, Exemplar, LoadOptions, builtin};
 
 /// The format this version writes. Older formats are converted on opening.
@@ -154,11 +155,19 @@ pub struct Document {
     pub imported: Vec<ImportedExemplar>,
     /// The next curve id.
     pub next_id: u64,
+    /// The printer the patterns are made for (absent in older projects: the defaults).
+    pub print: PrintSettings,
 }
 
 impl Default for Document {
     fn default() -> Self {
-        Document { format_version: FORMAT_VERSION, curves: Vec::new(), imported: Vec::new(), next_id: 0 }
+        Document {
+            format_version: FORMAT_VERSION,
+            curves: Vec::new(),
+            imported: Vec::new(),
+            next_id: 0,
+            print: PrintSettings::default(),
+        }
     }
 }
 

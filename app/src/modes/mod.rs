@@ -10,6 +10,7 @@ use egui::{Color32, Stroke};
 use tracery_core::Product;
 use tracery_core::control::{Control, MaybeCancelled};
 use tracery_core::curve::Curve;
+use tracery_core::print::{PrintSettings, finish};
 
 use crate::canvas::{View, polyline};
 use crate::command::Command;
@@ -119,13 +120,31 @@ impl MaybeCancelled for JobError {
     }
 }
 
-impl Job for ModeJob {
+impl ModeJob {
+    /// Runs the mode.
+    pub fn run(&self, control: &Control) -> Result<Product, JobError> {
+        match self {
+            ModeJob::VectorBrush(job) => Ok(job.run(control)?),
+        }
+    }
+}
+
+/// What the worker computes for a curve: its mode's job, then the
+/// printability check against the document's printer (shared by every mode).
+#[derive(Clone, Debug, PartialEq)]
+pub struct CurveJob {
+    /// The mode's job.
+    pub mode: ModeJob,
+    /// The printer the result is checked against (and thickened for).
+    pub print: PrintSettings,
+}
+
+impl Job for CurveJob {
     type Output = Product;
     type Error = JobError;
 
     fn run(&self, control: &Control) -> Result<Product, JobError> {
-        match self {
-            ModeJob::VectorBrush(job) => Ok(job.run(control)?),
-        }
+        let product = self.mode.run(control)?;
+        Ok(finish(product, &self.print))
     }
 }

@@ -4,6 +4,7 @@
 pub mod exemplar_picker;
 pub mod files;
 pub mod preview_3d;
+pub mod printer;
 pub mod side_panel;
 pub mod status;
 pub mod top_bar;

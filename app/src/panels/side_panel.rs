@@ -43,5 +43,7 @@ pub fn side_panel_ui(app: &mut TraceryApp, ui: &mut egui::Ui) {
         app.queue(command);
     }
     ui.separator();
+    super::printer::printer_ui(app, ui);
+    ui.separator();
     super::files::files_ui(app, ui);
 }

@@ -14,8 +14,10 @@ pub const CUT_COLOUR: &str = "#FF0000";
 pub const HAIRLINE_MM: f64 = 0.01;
 /// Margin around the pattern, mm.
 const MARGIN_MM: f64 = 1.0;
-/// Coordinates are written to 0.1 µm; points closer than that are one point.
-const DECIMALS: usize = 4;
+/// Coordinates are written to 1 nm, so that outlines which touch at a point
+/// still touch, and do not cross, when the file is read back; points closer
+/// than that are one point.
+const DECIMALS: usize = 6;
 
 /// What the SVG is for.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize, Deserialize)]

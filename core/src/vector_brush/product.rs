@@ -98,5 +98,6 @@ pub fn make_product(
         warnings,
         timings,
         facts,
+        printability: None,
     })
 }

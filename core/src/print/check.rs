@@ -1,0 +1,209 @@
+//! The printability check on final planar geometry: thin features, narrow
+//! gaps and weak bridges, each with where it is.
+
+use std::collections::HashMap;
+
+use glam::DVec2;
+use serde::Serialize;
+
+use super::PrintSettings;
+use super::thickness::{Narrow, Side, narrow_places};
+use crate::geom::Region;
+
+/// A group of narrow places is a flaw when, somewhere in it, the two sides
+/// are at least this many minimum widths apart along the outline: a neck
+/// between two parts, a long thin strip, a slot. Sharp tips and V notches,
+/// whose sides meet close by, are narrow only at their very end, which no
+/// nozzle resolves and no one expects it to.
+const FLAW_SIDES_APART_WIDTHS: f64 = 4.0;
+
+/// Outline samples per minimum width: fine enough that a neck as short as a
+/// fifth of the nozzle is sampled.
+const SAMPLES_PER_WIDTH: f64 = 5.0;
+
+/// A thin feature or a narrow gap: neighbouring narrow places grouped.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct Flaw {
+    /// Where it is narrowest (the disc's centre there), mm.
+    pub at_mm: DVec2,
+    /// Its narrowest width, mm.
+    pub width_mm: f64,
+    /// Its narrow cross-sections, outline to outline, mm (for drawing).
+    #[serde(skip)]
+    pub spans_mm: Vec<[DVec2; 2]>,
+    /// The discs that fit there: (centre, radius), mm (for thickening).
+    #[serde(skip)]
+    pub discs_mm: Vec<(DVec2, f64)>,
+}
+
+/// Material across a seam between two pieces: a portal as printed.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct Bridge {
+    /// Its middle, mm.
+    pub at_mm: DVec2,
+    /// Its width along the seam, mm.
+    pub width_mm: f64,
+    /// Its two ends on the seam, mm (for drawing).
+    #[serde(skip)]
+    pub ends_mm: [DVec2; 2],
+}
+
+/// What the check found.
+#[derive(Clone, Debug, Default, PartialEq, Serialize)]
+pub struct Printability {
+    /// The nozzle checked against, mm.
+    pub nozzle_mm: f64,
+    /// The thinnest feature, mm, when one is thinner than the nozzle.
+    pub thinnest_feature_mm: Option<f64>,
+    /// The narrowest gap, mm, when one is narrower than the nozzle.
+    pub narrowest_gap_mm: Option<f64>,
+    /// Features thinner than the nozzle, thinnest first.
+    pub thin_features: Vec<Flaw>,
+    /// Gaps narrower than the nozzle, narrowest first.
+    pub narrow_gaps: Vec<Flaw>,
+    /// Bridges between pieces narrower than the limit, weakest first.
+    pub weak_bridges: Vec<Bridge>,
+    /// Layers in the pattern's thickness.
+    pub layers: f64,
+    /// Whether thin features were thickened to the nozzle.
+    pub thickened: bool,
+}
+
+/// Checks `region` (printed `thickness_mm` thick) against `settings`.
+/// `seams_mm` are the cut lines between pieces, across the band: the
+/// material on each is a bridge.
+///
+/// ```
+/// use tracery_core::DVec2;
+/// use tracery_core::geom::{Polygon, Region};
+/// use tracery_core::print::{PrintSettings, check};
+/// let rect = |x0: f64, y0: f64, x1: f64, y1: f64| vec![DVec2::new(x0, y0), DVec2::new(x1, y0), DVec2::new(x1, y1), DVec2::new(x0, y1)];
+/// // Two 3 mm squares joined by a 0.2 mm neck.
+/// let shape = resolve(&[rect(0.0, 0.0, 3.0, 3.0), rect(3.0, 1.4, 5.0, 1.6), rect(5.0, 0.0, 8.0, 3.0)]);
+/// # fn resolve(r: &[Vec<DVec2>]) -> Region { tracery_core::geom::resolve_contours(r, tracery_core::geom::FillRule::NonZero) }
+/// let found = check(&shape, &[], &PrintSettings::default(), 2.0);
+/// assert_eq!(found.thin_features.len(), 1);
+/// assert!((found.thinnest_feature_mm.unwrap() - 0.2).abs() < 1e-6);
+/// assert!((found.thin_features[0].at_mm.x - 4.0).abs() < 1.0);
+/// ```
+pub fn check(region: &Region, seams_mm: &[[DVec2; 2]], settings: &PrintSettings, thickness_mm: f64) -> Printability {
+    let width = settings.min_width_mm();
+    let spacing = width / SAMPLES_PER_WIDTH;
+    let thin_features = group(narrow_places(region, Side::Material, width, spacing), width);
+    let narrow_gaps = group(narrow_places(region, Side::Gap, width, spacing), width);
+    let mut weak_bridges: Vec<Bridge> = seams_mm
+        .iter()
+        .flat_map(|s| bridges_on(region, *s))
+        .filter(|b| b.width_mm < settings.min_bridge_mm())
+        .collect();
+    weak_bridges.sort_by(|a, b| a.width_mm.total_cmp(&b.width_mm));
+    Printability {
+        nozzle_mm: settings.nozzle_mm,
+        thinnest_feature_mm: thin_features.first().map(|f| f.width_mm),
+        narrowest_gap_mm: narrow_gaps.first().map(|f| f.width_mm),
+        thin_features,
+        narrow_gaps,
+        weak_bridges,
+        layers: thickness_mm / settings.layer_height_mm,
+        thickened: false,
+    }
+}
+
+/// Narrow places whose discs lie within `width` of each other are one flaw.
+fn group(places: Vec<Narrow>, width: f64) -> Vec<Flaw> {
+    let n = places.len();
+    let mut parent: Vec<usize> = (0..n).collect();
+    fn find(parent: &mut [usize], mut x: usize) -> usize {
+        while parent[x] != x {
+            parent[x] = parent[parent[x]];
+            x = parent[x];
+        }
+        x
+    }
+    let cell_of = |p: DVec2| ((p.x / width).floor() as i64, (p.y / width).floor() as i64);
+    let mut grid: HashMap<(i64, i64), Vec<usize>> = HashMap::new();
+    for (i, p) in places.iter().enumerate() {
+        grid.entry(cell_of(p.centre_mm)).or_default().push(i);
+    }
+    for (i, p) in places.iter().enumerate() {
+        let (cx, cy) = cell_of(p.centre_mm);
+        for x in cx - 1..=cx + 1 {
+            for y in cy - 1..=cy + 1 {
+                for &j in grid.get(&(x, y)).into_iter().flatten() {
+                    if j > i && places[j].centre_mm.distance(p.centre_mm) <= width {
+                        let (a, b) = (find(&mut parent, i), find(&mut parent, j));
+                        parent[a] = b;
+                    }
+                }
+            }
+        }
+    }
+    let mut flaws: HashMap<usize, Flaw> = HashMap::new();
+    for (i, p) in places.iter().enumerate() {
+        let root = find(&mut parent, i);
+        let flaw = flaws.entry(root).or_insert_with(|| Flaw {
+            at_mm: p.centre_mm,
+            width_mm: p.width_mm,
+            spans_mm: Vec::new(),
+            discs_mm: Vec::new(),
+        });
+        if p.width_mm < flaw.width_mm {
+            flaw.width_mm = p.width_mm;
+            flaw.at_mm = p.centre_mm;
+        }
+        flaw.spans_mm.push([p.from_mm, p.to_mm]);
+        flaw.discs_mm.push((p.centre_mm, p.width_mm / 2.0));
+    }
+    let mut significant: HashMap<usize, bool> = HashMap::new();
+    for (i, p) in places.iter().enumerate() {
+        let root = find(&mut parent, i);
+        *significant.entry(root).or_default() |= p.apart_along_outline_mm >= FLAW_SIDES_APART_WIDTHS * width;
+    }
+    flaws.retain(|root, _| significant[root]);
+    let mut flaws: Vec<Flaw> = flaws.into_values().collect();
+    flaws.sort_by(|a, b| a.width_mm.total_cmp(&b.width_mm).then(a.at_mm.x.total_cmp(&b.at_mm.x)));
+    flaws
+}
+
+/// The stretches of material along one seam.
+fn bridges_on(region: &Region, [a, b]: [DVec2; 2]) -> Vec<Bridge> {
+    let ab = b - a;
+    let mut ts = vec![0.0, 1.0];
+    for ring in region.rings() {
+        for k in 0..ring.len() {
+            let (p, q) = (ring[k], ring[(k + 1) % ring.len()]);
+            let denom = ab.perp_dot(q - p);
+            if denom == 0.0 {
+                continue;
+            }
+            let t = (p - a).perp_dot(q - p) / denom;
+            let s = (p - a).perp_dot(ab) / denom;
+            if (0.0..=1.0).contains(&t) && (0.0..=1.0).contains(&s) {
+                ts.push(t);
+            }
+        }
+    }
+    ts.sort_by(f64::total_cmp);
+    let mut bridges: Vec<Bridge> = Vec::new();
+    let mut open: Option<f64> = None;
+    for w in ts.windows(2) {
+        let inside = w[1] > w[0] && region.contains(a + ab * (0.5 * (w[0] + w[1])));
+        match (inside, open) {
+            (true, None) => open = Some(w[0]),
+            (false, Some(start)) => {
+                bridges.push(bridge(a, ab, start, w[0]));
+                open = None;
+            }
+            _ => {}
+        }
+    }
+    if let Some(start) = open {
+        bridges.push(bridge(a, ab, start, 1.0));
+    }
+    bridges
+}
+
+fn bridge(a: DVec2, ab: DVec2, t0: f64, t1: f64) -> Bridge {
+    let ends_mm = [a + ab * t0, a + ab * t1];
+    Bridge { at_mm: (ends_mm[0] + ends_mm[1]) * 0.5, width_mm: ends_mm[0].distance(ends_mm[1]), ends_mm }
+}

@@ -1,0 +1,105 @@
+//! Printability: what a nozzle can lay down, checked on the final planar
+//! geometry of any mode, and fixed where the person asks.
+//!
+//! - [`narrow_places`]: local widths by the shrinking-ball method, inside
+//!   the material (thin features) and outside it (narrow gaps).
+//! - [`check`]: those grouped into flaws with a place and a width, and the
+//!   bridges across seams between pieces that are weaker than a limit.
+//! - [`thicken`]: thin features grown to the nozzle's width.
+//! - [`finish`]: all of it applied to a [`Product`], with the topology
+//!   counted again after thickening.
+
+mod check;
+mod settings;
+mod thicken;
+mod thickness;
+
+pub use check::{Bridge, Flaw, Printability, check};
+pub use settings::{PrintSettings, PrintSettingsError};
+pub use thicken::thicken;
+pub use thickness::{Narrow, Side, narrow_places};
+
+use crate::Product;
+use crate::geom::count_topology;
+use crate::mesh::extrude;
+use crate::report::Warning;
+
+/// Checks a product against `settings` and, when asked, thickens its thin
+/// features, rebuilds its solid and counts its topology again. Products
+/// without planar geometry are returned as they are.
+///
+/// ```
+/// use tracery_core::control::Control;
+/// use tracery_core::curve::Along;
+/// use tracery_core::print::{PrintSettings, finish};
+/// use tracery_core::vector_brush::{Settings, builtin, make_product};
+/// let along = Along::parse("line:60").unwrap();
+/// let product = make_product(&builtin("vine").unwrap(), &along, &Settings::default(), &Control::default()).unwrap();
+/// let checked = finish(product, &PrintSettings::default());
+/// assert!(checked.printability.is_some());
+/// ```
+pub fn finish(mut product: Product, settings: &PrintSettings) -> Product {
+    let Some(mesh) = &product.mesh_mm else { return product };
+    if product.region_mm.is_empty() {
+        return product;
+    }
+    let thickness_mm = mesh.vertices.iter().map(|v| v[2]).fold(0.0, f64::max);
+    let seams = product.overlays.seams_mm.clone();
+    let mut found = product.timings.time("print check", || check(&product.region_mm, &seams, settings, thickness_mm));
+    if settings.thicken && !found.thin_features.is_empty() {
+        let before = count_topology(&product.region_mm);
+        let thick = product
+            .timings
+            .time("thicken", || thicken(&product.region_mm, &found.thin_features, settings.min_width_mm()));
+        match product.timings.time("mesh", || extrude(&thick, thickness_mm)) {
+            Ok(mesh) => {
+                let after = count_topology(&thick);
+                if after != before {
+                    product.warnings.push(Warning::ThickeningChangedTopology {
+                        components: (before.components, after.components),
+                        holes: (before.holes, after.holes),
+                    });
+                }
+                let t = &mut product.topology;
+                t.components = after.components;
+                t.holes = after.holes.saturating_sub(t.loop_openings);
+                product.fill_mm = mesh.top_faces();
+                product.mesh_mm = Some(mesh);
+                product.region_mm = thick;
+                found =
+                    product.timings.time("print check", || check(&product.region_mm, &seams, settings, thickness_mm));
+                found.thickened = true;
+            }
+            Err(e) => product.warnings.push(Warning::ThickeningFailed { reason: e.to_string() }),
+        }
+    }
+    if let Some(width_mm) = found.thinnest_feature_mm {
+        product.warnings.push(Warning::ThinFeatures {
+            count: found.thin_features.len(),
+            width_mm,
+            nozzle_mm: settings.nozzle_mm,
+        });
+    }
+    if let Some(width_mm) = found.narrowest_gap_mm {
+        product.warnings.push(Warning::NarrowGaps {
+            count: found.narrow_gaps.len(),
+            width_mm,
+            nozzle_mm: settings.nozzle_mm,
+        });
+    }
+    if let Some(weakest) = found.weak_bridges.first() {
+        product.warnings.push(Warning::WeakBridges {
+            count: found.weak_bridges.len(),
+            width_mm: weakest.width_mm,
+            limit_mm: settings.min_bridge_mm(),
+        });
+    }
+    if found.layers < MIN_LAYERS {
+        product.warnings.push(Warning::FewLayers { layers: found.layers });
+    }
+    product.printability = Some(found);
+    product
+}
+
+/// Fewer layers than this make a fragile print.
+const MIN_LAYERS: f64 = 3.0;
