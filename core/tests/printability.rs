@@ -121,3 +121,34 @@ fn thickened_builtin_patterns_mesh_with_the_topology_counted() {
         assert_eq!(done.topology.holes + done.topology.loop_openings, counted.holes, "{name}");
     }
 }
+
+#[test]
+fn bridges_on_real_seams_are_material_and_add_up_to_what_a_probe_measures() {
+    let along = Along::parse("circle:25").unwrap();
+    for name in ["lace", "braid", "filigree"] {
+        let product = make_product(&builtin(name).unwrap(), &along, &Settings::default(), &Control::default()).unwrap();
+        let region = &product.region_mm;
+        // A limit no bridge reaches: every bridge is listed.
+        let mut settings = PrintSettings::default().with_nozzle_mm(3.0);
+        settings.bridge_nozzles = 20.0;
+        let found = check(region, &product.overlays.seams_mm, &settings, 2.0);
+        assert!(!found.weak_bridges.is_empty());
+        for b in &found.weak_bridges {
+            assert!(region.contains(b.at_mm), "{name}: bridge at {} ({} mm) is not material", b.at_mm, b.width_mm);
+        }
+        // Per seam, the bridges' total equals the material a fine probe finds.
+        let listed: f64 = found.weak_bridges.iter().map(|b| b.width_mm).sum();
+        let probed: f64 = product
+            .overlays
+            .seams_mm
+            .iter()
+            .map(|[a, b]| {
+                let steps = 2000;
+                let inside =
+                    (0..steps).filter(|k| region.contains(a.lerp(*b, (*k as f64 + 0.5) / steps as f64))).count();
+                a.distance(*b) * inside as f64 / steps as f64
+            })
+            .sum();
+        assert!((listed - probed).abs() < 0.01 * probed, "{name}: bridges {listed} mm, probe {probed} mm");
+    }
+}

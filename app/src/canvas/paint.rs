@@ -28,8 +28,9 @@ pub fn fill(view: &View, rect: Rect, triangles: &[[DVec2; 3]], color: Color32) -
 }
 
 /// Thin features (red), narrow gaps (blue) and weak bridges (orange): each
-/// narrow cross-section drawn across, and a ring where each is narrowest,
-/// large enough to find at any zoom.
+/// narrow cross-section drawn across, and a ring where each flaw is
+/// narrowest, large enough to find at any zoom. Bridges get no ring: on a
+/// fine ornament every seam crosses many, and their rings would hide it.
 pub fn print_flaws(painter: &egui::Painter, view: &View, rect: Rect, found: &tracery_core::print::Printability) {
     const THIN: Color32 = Color32::from_rgb(230, 40, 40);
     const GAP: Color32 = Color32::from_rgb(40, 120, 240);
@@ -48,6 +49,5 @@ pub fn print_flaws(painter: &egui::Painter, view: &View, rect: Rect, found: &tra
     for bridge in &found.weak_bridges {
         let [a, b] = bridge.ends_mm;
         painter.line_segment([view.to_screen(rect, a), view.to_screen(rect, b)], Stroke::new(3.0, BRIDGE));
-        ring(bridge.at_mm, BRIDGE);
     }
 }

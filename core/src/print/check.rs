@@ -1,7 +1,7 @@
 //! The printability check on final planar geometry: thin features, narrow
 //! gaps and weak bridges, each with where it is.
 
-use std::collections::HashMap;
+use rustc_hash::FxHashMap;
 
 use glam::DVec2;
 use serde::Serialize;
@@ -91,9 +91,11 @@ pub fn check(region: &Region, seams_mm: &[[DVec2; 2]], settings: &PrintSettings,
     let spacing = width / SAMPLES_PER_WIDTH;
     let thin_features = group(narrow_places(region, Side::Material, width, spacing), width);
     let narrow_gaps = group(narrow_places(region, Side::Gap, width, spacing), width);
+    let seam_length = seams_mm.iter().map(|[a, b]| a.distance(*b)).fold(0.0, f64::max);
+    let edges = EdgeBuckets::new(region, (seam_length / 8.0).max(width));
     let mut weak_bridges: Vec<Bridge> = seams_mm
         .iter()
-        .flat_map(|s| bridges_on(region, *s))
+        .flat_map(|s| bridges_on(region, &edges, *s))
         .filter(|b| b.width_mm < settings.min_bridge_mm())
         .collect();
     weak_bridges.sort_by(|a, b| a.width_mm.total_cmp(&b.width_mm));
@@ -121,7 +123,7 @@ fn group(places: Vec<Narrow>, width: f64) -> Vec<Flaw> {
         x
     }
     let cell_of = |p: DVec2| ((p.x / width).floor() as i64, (p.y / width).floor() as i64);
-    let mut grid: HashMap<(i64, i64), Vec<usize>> = HashMap::new();
+    let mut grid: FxHashMap<(i64, i64), Vec<usize>> = FxHashMap::default();
     for (i, p) in places.iter().enumerate() {
         grid.entry(cell_of(p.centre_mm)).or_default().push(i);
     }
@@ -138,7 +140,7 @@ fn group(places: Vec<Narrow>, width: f64) -> Vec<Flaw> {
             }
         }
     }
-    let mut flaws: HashMap<usize, Flaw> = HashMap::new();
+    let mut flaws: FxHashMap<usize, Flaw> = FxHashMap::default();
     for (i, p) in places.iter().enumerate() {
         let root = find(&mut parent, i);
         let flaw = flaws.entry(root).or_insert_with(|| Flaw {
@@ -154,7 +156,7 @@ fn group(places: Vec<Narrow>, width: f64) -> Vec<Flaw> {
         flaw.spans_mm.push([p.from_mm, p.to_mm]);
         flaw.discs_mm.push((p.centre_mm, p.width_mm / 2.0));
     }
-    let mut significant: HashMap<usize, bool> = HashMap::new();
+    let mut significant: FxHashMap<usize, bool> = FxHashMap::default();
     for (i, p) in places.iter().enumerate() {
         let root = find(&mut parent, i);
         *significant.entry(root).or_default() |= p.apart_along_outline_mm >= FLAW_SIDES_APART_WIDTHS * width;
@@ -165,29 +167,119 @@ fn group(places: Vec<Narrow>, width: f64) -> Vec<Flaw> {
     flaws
 }
 
-/// The stretches of material along one seam.
-fn bridges_on(region: &Region, [a, b]: [DVec2; 2]) -> Vec<Bridge> {
+/// The outline's edges bucketed in a grid, for crossing seams quickly.
+struct EdgeBuckets<'a> {
+    rings: Vec<&'a [DVec2]>,
+    cell_mm: f64,
+    cells: FxHashMap<(i64, i64), Vec<(u32, u32)>>,
+}
+
+impl<'a> EdgeBuckets<'a> {
+    fn new(region: &'a Region, cell_mm: f64) -> Self {
+        let rings: Vec<&[DVec2]> = region.rings().map(|r| r.as_slice()).collect();
+        let mut cells: FxHashMap<(i64, i64), Vec<(u32, u32)>> = FxHashMap::default();
+        for (r, ring) in rings.iter().enumerate() {
+            for k in 0..ring.len() {
+                let (p, q) = (ring[k], ring[(k + 1) % ring.len()]);
+                let (lo, hi) = (cell_of(p.min(q), cell_mm), cell_of(p.max(q), cell_mm));
+                for x in lo.0..=hi.0 {
+                    for y in lo.1..=hi.1 {
+                        cells.entry((x, y)).or_default().push((r as u32, k as u32));
+                    }
+                }
+            }
+        }
+        EdgeBuckets { rings, cell_mm, cells }
+    }
+
+    /// Edges whose cells overlap the box around `a`–`b`, each once.
+    fn near(&self, a: DVec2, b: DVec2) -> Vec<(u32, u32)> {
+        let (lo, hi) = (cell_of(a.min(b), self.cell_mm), cell_of(a.max(b), self.cell_mm));
+        let mut out: Vec<(u32, u32)> = Vec::new();
+        for x in lo.0..=hi.0 {
+            for y in lo.1..=hi.1 {
+                out.extend(self.cells.get(&(x, y)).into_iter().flatten());
+            }
+        }
+        out.sort_unstable();
+        out.dedup();
+        out
+    }
+}
+
+fn cell_of(p: DVec2, cell: f64) -> (i64, i64) {
+    ((p.x / cell).floor() as i64, (p.y / cell).floor() as i64)
+}
+
+/// The stretches of material along one seam: the seam is split where it
+/// crosses the outline, and each piece is material when its middle lies
+/// left of the nearest outline edge (material lies left of every ring),
+/// with the usual rule at a vertex: left of both edges at a convex corner,
+/// of either at a reflex one.
+fn bridges_on(region: &Region, edges: &EdgeBuckets<'_>, [a, b]: [DVec2; 2]) -> Vec<Bridge> {
     let ab = b - a;
+    let near = edges.near(a, b);
+    let edge = |(r, k): (u32, u32)| {
+        let ring = edges.rings[r as usize];
+        let n = ring.len();
+        (ring[(k as usize + n - 1) % n], ring[k as usize], ring[(k as usize + 1) % n], ring[(k as usize + 2) % n])
+    };
     let mut ts = vec![0.0, 1.0];
-    for ring in region.rings() {
-        for k in 0..ring.len() {
-            let (p, q) = (ring[k], ring[(k + 1) % ring.len()]);
-            let denom = ab.perp_dot(q - p);
-            if denom == 0.0 {
-                continue;
-            }
-            let t = (p - a).perp_dot(q - p) / denom;
-            let s = (p - a).perp_dot(ab) / denom;
-            if (0.0..=1.0).contains(&t) && (0.0..=1.0).contains(&s) {
-                ts.push(t);
-            }
+    let along = |x: DVec2| (x - a).dot(ab) / ab.length_squared();
+    for &e in &near {
+        let (_, p, q, _) = edge(e);
+        // Which side of the seam's line each end lies on, with zero counted
+        // as one side: an edge ending on the line, or of no length, then
+        // crosses once or not at all, never twice.
+        let (dp, dq) = (ab.perp_dot(p - a), ab.perp_dot(q - a));
+        if (dp > 0.0) == (dq > 0.0) {
+            continue;
+        }
+        let t = along(p) + (along(q) - along(p)) * (dp / (dp - dq));
+        if (0.0..=1.0).contains(&t) {
+            ts.push(t);
         }
     }
     ts.sort_by(f64::total_cmp);
+    ts.dedup();
+    let is_material = |m: DVec2| -> bool {
+        let mut best: Option<(f64, (u32, u32), f64)> = None;
+        for &e in &near {
+            let (_, p, q, _) = edge(e);
+            let pq = q - p;
+            let u =
+                if pq.length_squared() > 0.0 { ((m - p).dot(pq) / pq.length_squared()).clamp(0.0, 1.0) } else { 0.0 };
+            let d = m.distance_squared(p + pq * u);
+            if best.is_none_or(|(bd, _, _)| d < bd) {
+                best = Some((d, e, u));
+            }
+        }
+        let Some((_, e, u)) = best.filter(|(d, _, _)| d.sqrt() < edges.cell_mm) else { return region.contains(m) };
+        let (o, p, q, r) = edge(e);
+        let left = |x: DVec2, y: DVec2| (y - x).perp_dot(m - x) > 0.0;
+        // At a vertex, the corner decides with both of its edges.
+        let corner = |before: DVec2, at: DVec2, after: DVec2| {
+            let convex = (at - before).perp_dot(after - at) > 0.0;
+            if convex { left(before, at) && left(at, after) } else { left(before, at) || left(at, after) }
+        };
+        if u <= 0.0 {
+            corner(o, p, q)
+        } else if u >= 1.0 {
+            corner(p, q, r)
+        } else {
+            left(p, q)
+        }
+    };
     let mut bridges: Vec<Bridge> = Vec::new();
     let mut open: Option<f64> = None;
+    // Stretches shorter than a micrometre (where the seam grazes a vertex)
+    // are neither material nor gap: they join their neighbours.
+    let shortest = 1e-3 / ab.length().max(1e-12);
     for w in ts.windows(2) {
-        let inside = w[1] > w[0] && region.contains(a + ab * (0.5 * (w[0] + w[1])));
+        if w[1] - w[0] < shortest {
+            continue;
+        }
+        let inside = is_material(a + ab * (0.5 * (w[0] + w[1])));
         match (inside, open) {
             (true, None) => open = Some(w[0]),
             (false, Some(start)) => {

@@ -48,9 +48,17 @@ pub fn finish(mut product: Product, settings: &PrintSettings) -> Product {
     let mut found = product.timings.time("print check", || check(&product.region_mm, &seams, settings, thickness_mm));
     if settings.thicken && !found.thin_features.is_empty() {
         let before = count_topology(&product.region_mm);
-        let thick = product
-            .timings
-            .time("thicken", || thicken(&product.region_mm, &found.thin_features, settings.min_width_mm()));
+        // Discs joined to other material can leave a new, shorter neck
+        // beside them: a few passes settle it.
+        let mut thick = product.region_mm.clone();
+        let mut thin = found.thin_features.clone();
+        for _ in 0..THICKEN_PASSES {
+            thick = product.timings.time("thicken", || thicken(&thick, &thin, settings.min_width_mm()));
+            thin = product.timings.time("print check", || check(&thick, &[], settings, thickness_mm)).thin_features;
+            if thin.is_empty() {
+                break;
+            }
+        }
         match product.timings.time("mesh", || extrude(&thick, thickness_mm)) {
             Ok(mesh) => {
                 let after = count_topology(&thick);
@@ -100,6 +108,9 @@ pub fn finish(mut product: Product, settings: &PrintSettings) -> Product {
     product.printability = Some(found);
     product
 }
+
+/// Thickening passes at most.
+const THICKEN_PASSES: usize = 3;
 
 /// Fewer layers than this make a fragile print.
 const MIN_LAYERS: f64 = 3.0;
