@@ -97,11 +97,7 @@ fn render(tile: &Tile) -> tiny_skia::Pixmap {
         &mut f.narrow_gaps.iter().map(|x| x.at_mm),
         paint(40, 110, 240),
     );
-    mark(
-        &mut f.weak_bridges.iter().map(|b| b.ends_mm),
-        &mut f.weak_bridges.iter().map(|b| b.at_mm),
-        paint(250, 150, 0),
-    );
+    mark(&mut f.weak_bridges.iter().map(|b| b.ends_mm), &mut std::iter::empty(), paint(250, 150, 0));
     pixmap
 }
 
