@@ -179,6 +179,36 @@ fn export_writes_a_3mf_with_one_object_per_curve_and_a_cut_svg() {
 }
 
 #[test]
+fn the_ring_tool_hangs_a_pendant_from_a_jump_ring_where_clicked() {
+    let mut harness = harness(vec![]);
+    harness.step();
+    drag(&mut harness, &circle(Pos2::new(700.0, 420.0), 60.0));
+    settle(&mut harness);
+    harness.get_by_label("Ring").click();
+    harness.step();
+    // Just above the loop's top.
+    let above = Pos2::new(700.0, 420.0 - 60.0 - 45.0);
+    harness.hover_at(above);
+    harness.step();
+    press(&harness, above, true);
+    harness.step();
+    press(&harness, above, false);
+    harness.step();
+    settle(&mut harness);
+    let app = harness.state();
+    let curve = &app.doc.curves[0];
+    assert_eq!(curve.jump_rings.at.len(), 1, "{:?}", app.message);
+    let product = app.output(curve.id).expect("a pattern");
+    assert_eq!((product.topology.components, product.topology.jump_rings), (1, 1));
+    assert_eq!(product.mesh_mm.as_ref().unwrap().shell_count(), 1);
+    harness.get_by_label_contains("+ 1 jump ring");
+    // Undo takes the ring away again.
+    harness.key_press_modifiers(Modifiers::COMMAND, Key::Z);
+    harness.step();
+    assert!(harness.state().doc.curves[0].jump_rings.at.is_empty());
+}
+
+#[test]
 fn a_broken_svg_import_shows_an_error_and_changes_nothing() {
     let path = std::env::temp_dir().join(format!("tracery-broken-{}.svg", std::process::id()));
     std::fs::write(&path, "<svg xmlns='http://www.w3.org/2000/svg'><path d='M0 0 L10").unwrap();

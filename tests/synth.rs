@@ -138,6 +138,10 @@ fn bad_input_gives_one_clear_line() {
         vec!["synth", "--exemplar", "lace", "--along", "line:100", "--thickness", "-1"],
         vec!["synth", "--exemplar", "lace", "--along", "line:100", "--kerf", "-0.1"],
         vec!["synth", "--exemplar", "lace", "--along", "line:100", "--svg-flavour", "plot"],
+        vec!["synth", "--exemplar", "lace", "--along", "line:100", "--jump-ring", "middle"],
+        vec!["synth", "--exemplar", "lace", "--along", "line:100", "--jump-ring", "top", "--jump-ring-hole", "0.1"],
+        vec!["synth", "--exemplar", "lace", "--along", "circle:20", "--jump-ring", "start"],
+        vec!["synth", "--exemplar", "lace", "--along", "line:100", "--nozzle", "9"],
     ] {
         let out = tracery().args(&args).output().unwrap();
         assert!(!out.status.success(), "{args:?}");
@@ -214,6 +218,18 @@ fn a_pendant_goes_out_as_3mf_and_a_cut_svg() {
     assert_eq!(read.objects[0].2.len(), check_stl(&stl).triangles, "the same solid as the STL");
     assert!(threemf::is_closed(&read.objects[0].2));
     if let Some((manifold, objects)) = threemf::prusa_info(&three_mf) {
+        assert!(manifold && objects == 1);
+    }
+    let with_ring = dir.join("ring.3mf");
+    let ring_json = synth_report(
+        &["--exemplar", "chain", "--along", "circle:12", "--jump-ring", "top", "--3mf", &path(&with_ring)],
+        &dir.join("ring.json"),
+    );
+    let found = (field(&ring_json, "components"), field(&ring_json, "jump_rings"));
+    assert_eq!(found, ("1".into(), "1".into()), "{ring_json}");
+    let read = threemf::read_3mf(&std::fs::read(&with_ring).unwrap());
+    assert!(read.objects.len() == 1 && threemf::is_closed(&read.objects[0].2));
+    if let Some((manifold, objects)) = threemf::prusa_info(&with_ring) {
         assert!(manifold && objects == 1);
     }
     // The cut SVG has one closed hairline path per outline and hole.

@@ -136,6 +136,21 @@ impl TraceryApp {
         self.worker.output(id)
     }
 
+    /// Hangs a jump ring at `p` (mm) on the selected curve, or on the
+    /// nearest one within reach.
+    pub fn add_jump_ring_at(&mut self, p: tracery_core::DVec2) {
+        let reach_mm = 30.0;
+        let target = self.selected.or_else(|| crate::canvas::curve_at(self, p, reach_mm));
+        let Some(item) = target.and_then(|id| self.doc.curve_mut(id)) else {
+            self.message = Some(("Click near a curve to hang a jump ring on it".into(), true));
+            return;
+        };
+        item.jump_rings.at.push(tracery_core::print::RingAt::Point { x_mm: p.x, y_mm: p.y });
+        let id = item.id;
+        self.selected = Some(id);
+        self.message = Some((format!("Jump ring added to Curve {id}"), false));
+    }
+
     /// The job state of a curve.
     pub fn job_state(&self, id: u64) -> Option<&JobState<tracery_core::Product, JobError>> {
         self.worker.state(id)
@@ -152,7 +167,10 @@ impl TraceryApp {
         for item in &self.doc.curves {
             let Some(curve) = self.caches.smoothed(item.id).cloned() else { continue };
             match mode_ui(&item.mode).job(&curve, &item.mode, &self.doc, &mut self.caches) {
-                Ok(mode) => self.worker.want(item.id, CurveJob { mode, print: self.doc.print }, now),
+                Ok(mode) => {
+                    let job = CurveJob { mode, jump_rings: item.jump_rings.clone(), print: self.doc.print };
+                    self.worker.want(item.id, job, now);
+                }
                 Err(e) => self.message = Some((e.to_string(), true)),
             }
         }

@@ -112,6 +112,9 @@ pub struct Product {
     pub mesh_mm: Option<Mesh>,
     /// A picture laid in the plane.
     pub image: Option<RasterImage>,
+    /// Where an open pattern starts and ends: each end's point and the
+    /// direction pointing away from the pattern, mm (empty on loops).
+    pub path_ends_mm: Vec<[DVec2; 2]>,
     /// Drawn over the result on the canvas.
     pub overlays: Overlays,
     /// Topology counted on the final geometry, independently of the planner.

@@ -79,6 +79,13 @@ pub enum Warning {
         /// Holes (loop openings included) before and after.
         holes: (usize, usize),
     },
+    /// A jump ring touched more than one part and joined them.
+    JumpRingsJoinedParts {
+        /// Components before.
+        before: usize,
+        /// Components after.
+        after: usize,
+    },
     /// The thickened pattern could not be made solid; the pattern is as synthesized.
     ThickeningFailed {
         /// Why.
@@ -128,6 +135,9 @@ impl std::fmt::Display for Warning {
                 "thickening changed the topology: {} → {} component(s), {} → {} hole(s)",
                 components.0, components.1, holes.0, holes.1
             ),
+            Warning::JumpRingsJoinedParts { before, after } => {
+                write!(f, "the jump rings joined parts of the pattern: {before} → {after} component(s)")
+            }
             Warning::ThickeningFailed { reason } => write!(f, "thin features were left as they are: {reason}"),
         }
     }

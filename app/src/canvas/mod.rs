@@ -65,7 +65,11 @@ pub fn canvas_ui(app: &mut TraceryApp, ui: &mut egui::Ui) {
     if response.clicked()
         && let Some(p) = response.interact_pointer_pos().map(|p| view.from_screen(rect, p))
     {
-        app.selected = curve_at(app, p, SELECT_RADIUS_POINTS / f64::from(view.points_per_mm));
+        if app.state.tool == Tool::Ring {
+            app.add_jump_ring_at(p);
+        } else {
+            app.selected = curve_at(app, p, SELECT_RADIUS_POINTS / f64::from(view.points_per_mm));
+        }
     }
     paint_document(app, ui, &painter, rect);
 }
@@ -85,6 +89,8 @@ fn handle_gestures(app: &mut TraceryApp, ui: &egui::Ui, response: &egui::Respons
         app.gesture = match app.state.tool {
             Tool::Draw => Some(Gesture::Stroke(draw::Stroke::begin(p))),
             Tool::Pan => Some(Gesture::Pan(pan::Pan)),
+            // The ring tool acts on clicks only.
+            Tool::Ring => None,
             Tool::Edit => {
                 let found =
                     EditDrag::begin(&app.doc, app.selected, p, tolerance_mm, |q| curve_at(app, q, tolerance_mm));

@@ -7,7 +7,7 @@ use anyhow::{Result, bail};
 use serde::Serialize;
 use tracery_core::Product;
 use tracery_core::export::{SvgFlavour, SvgOptions, ThreeMfObject, object_colour, write_3mf, write_stl, write_svg};
-use tracery_core::print::{PrintSettings, Printability};
+use tracery_core::print::{JumpRings, PrintSettings, Printability, RingAt};
 use tracery_core::product::Facts;
 use tracery_core::report::{Timings, Warning};
 
@@ -56,6 +56,33 @@ pub struct PrintArgs {
     /// Flag bridges between pieces narrower than this many nozzle widths [default: 1.5].
     #[arg(long)]
     pub weak_bridge: Option<f64>,
+    /// A jump ring for hanging the piece: start, end, top or X,Y (mm); repeat for more.
+    #[arg(long = "jump-ring", value_parser = parse_ring_at)]
+    pub jump_ring: Vec<RingAt>,
+    /// The jump rings' hole diameter, mm [default: 2.5].
+    #[arg(long)]
+    pub jump_ring_hole: Option<f64>,
+    /// The jump rings' wall, mm [default: 1.2].
+    #[arg(long)]
+    pub jump_ring_wall: Option<f64>,
+}
+
+fn parse_ring_at(s: &str) -> Result<RingAt, String> {
+    match s {
+        "start" => Ok(RingAt::Start),
+        "end" => Ok(RingAt::End),
+        "top" => Ok(RingAt::Top),
+        _ => {
+            let bad = || format!("'{s}' is not start, end, top or X,Y in mm");
+            let (x, y) = s.split_once(',').ok_or_else(bad)?;
+            let (x_mm, y_mm) =
+                (x.trim().parse::<f64>().map_err(|_| bad())?, y.trim().parse::<f64>().map_err(|_| bad())?);
+            if !(x_mm.is_finite() && y_mm.is_finite()) {
+                return Err(bad());
+            }
+            Ok(RingAt::Point { x_mm, y_mm })
+        }
+    }
 }
 
 impl PrintArgs {
@@ -68,6 +95,15 @@ impl PrintArgs {
         s.bridge_nozzles = self.weak_bridge.unwrap_or(s.bridge_nozzles);
         s.validate()?;
         Ok(s)
+    }
+
+    /// The jump rings these flags ask for, checked against the printer.
+    pub fn jump_rings(&self) -> Result<JumpRings> {
+        let mut rings = JumpRings::at(self.jump_ring.clone());
+        rings.hole_mm = self.jump_ring_hole.unwrap_or(rings.hole_mm);
+        rings.wall_mm = self.jump_ring_wall.unwrap_or(rings.wall_mm);
+        rings.validate(&self.settings()?)?;
+        Ok(rings)
     }
 }
 
@@ -105,6 +141,8 @@ pub struct Report<'a> {
     pub holes: usize,
     /// Central openings of a loop.
     pub loop_openings: usize,
+    /// Holes of jump rings.
+    pub jump_rings: usize,
     /// The mode's own figures.
     #[serde(flatten)]
     pub facts: &'a Facts,
@@ -146,6 +184,7 @@ pub fn write_outputs(mode: &'static str, exemplar: &str, args: &OutputArgs, prod
         components: product.topology.components,
         holes: product.topology.holes,
         loop_openings: product.topology.loop_openings,
+        jump_rings: product.topology.jump_rings,
         facts: &product.facts,
         stl_triangles: triangles,
         stl_shells: shells,
@@ -168,9 +207,10 @@ pub fn write_outputs(mode: &'static str, exemplar: &str, args: &OutputArgs, prod
     }
     let t = &product.topology;
     let openings = if t.loop_openings > 0 { format!(" (+{} loop opening)", t.loop_openings) } else { String::new() };
+    let rings = if t.jump_rings > 0 { format!(" (+{} jump ring)", t.jump_rings) } else { String::new() };
     let pieces = product.facts.count("pieces").map_or(String::new(), |n| format!(", {n} pieces"));
     println!(
-        "{exemplar}: {} component(s), {} hole(s){openings}{pieces}; {:.0} ms",
+        "{exemplar}: {} component(s), {} hole(s){openings}{rings}{pieces}; {:.0} ms",
         t.components,
         t.holes,
         product.timings.total_ms()

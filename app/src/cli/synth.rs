@@ -7,7 +7,7 @@ use anyhow::{Context, Result, bail};
 use clap::Parser;
 use tracery_core::control::Control;
 use tracery_core::curve::Along;
-use tracery_core::print::finish;
+use tracery_core::print::{add_jump_rings, finish};
 use tracery_core::vector_brush::{
     BUILTIN_NAMES, Exemplar, LoadOptions, Settings, SlicingMode, Target, builtin, make_product,
 };
@@ -109,8 +109,10 @@ pub fn run(args: SynthArgs) -> Result<()> {
     settings.validate()?;
     args.output.svg_options()?;
     let print = args.output.print.settings()?;
+    let rings = args.output.print.jump_rings()?;
     let exemplar = load_exemplar(&args.exemplar)?;
     let along = Along::parse(&args.output.along)?;
-    let product = finish(make_product(&exemplar, &along, &settings, &Control::default())?, &print);
+    let product = make_product(&exemplar, &along, &settings, &Control::default())?;
+    let product = finish(add_jump_rings(product, &rings)?, &print);
     write_outputs("synth", &exemplar.name, &args.output, &product)
 }

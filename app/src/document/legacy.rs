@@ -121,7 +121,13 @@ impl From<DocumentV0> for Document {
             curves: old
                 .curves
                 .into_iter()
-                .map(|c| CurveItem { id: c.id, points: c.points, closed: c.closed, mode: c.settings.into() })
+                .map(|c| CurveItem {
+                    id: c.id,
+                    points: c.points,
+                    closed: c.closed,
+                    mode: c.settings.into(),
+                    jump_rings: Default::default(),
+                })
                 .collect(),
             imported: old.imported,
             next_id: old.next_id,

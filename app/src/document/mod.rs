@@ -11,7 +11,7 @@ pub use history::History;
 use serde::{Deserialize, Serialize};
 use tracery_core::DVec2;
 use tracery_core::curve::Curve;
-use tracery_core::print::PrintSettings;
+use tracery_core::print::{JumpRings, PrintSettings};
 use tracery_core::vector_brush::{self, Exemplar, LoadOptions, builtin};
 
 /// The format this version writes. Older formats are converted on opening.
@@ -97,6 +97,9 @@ pub struct CurveItem {
     pub closed: bool,
     /// The mode and its settings.
     pub mode: ModeSettings,
+    /// Jump rings for hanging the piece (none in older projects).
+    #[serde(default)]
+    pub jump_rings: JumpRings,
 }
 
 impl CurveItem {
@@ -184,7 +187,8 @@ impl Document {
     pub fn add_curve(&mut self, points: Vec<DVec2>, closed: bool, mode: ModeSettings) -> u64 {
         let id = self.next_id;
         self.next_id += 1;
-        self.curves.push(CurveItem { id, points: points.iter().map(|p| [p.x, p.y]).collect(), closed, mode });
+        let points = points.iter().map(|p| [p.x, p.y]).collect();
+        self.curves.push(CurveItem { id, points, closed, mode, jump_rings: JumpRings::default() });
         id
     }
 

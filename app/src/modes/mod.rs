@@ -10,7 +10,7 @@ use egui::{Color32, Stroke};
 use tracery_core::Product;
 use tracery_core::control::{Control, MaybeCancelled};
 use tracery_core::curve::Curve;
-use tracery_core::print::{PrintSettings, finish};
+use tracery_core::print::{JumpRingError, JumpRings, PrintSettings, add_jump_rings, finish};
 
 use crate::canvas::{View, polyline};
 use crate::command::Command;
@@ -110,12 +110,16 @@ pub enum JobError {
     /// The vector brush failed.
     #[error(transparent)]
     VectorBrush(#[from] tracery_core::vector_brush::SynthesisError),
+    /// The jump rings could not be added.
+    #[error(transparent)]
+    JumpRing(#[from] JumpRingError),
 }
 
 impl MaybeCancelled for JobError {
     fn is_cancelled(&self) -> bool {
         match self {
             JobError::VectorBrush(e) => e.is_cancelled(),
+            JobError::JumpRing(_) => false,
         }
     }
 }
@@ -135,6 +139,8 @@ impl ModeJob {
 pub struct CurveJob {
     /// The mode's job.
     pub mode: ModeJob,
+    /// Jump rings added to the result.
+    pub jump_rings: JumpRings,
     /// The printer the result is checked against (and thickened for).
     pub print: PrintSettings,
 }
@@ -145,6 +151,7 @@ impl Job for CurveJob {
 
     fn run(&self, control: &Control) -> Result<Product, JobError> {
         let product = self.mode.run(control)?;
-        Ok(finish(product, &self.print))
+        self.jump_rings.validate(&self.print)?;
+        Ok(finish(add_jump_rings(product, &self.jump_rings)?, &self.print))
     }
 }

@@ -3,6 +3,7 @@
 
 pub mod exemplar_picker;
 pub mod files;
+pub mod jump_rings;
 pub mod preview_3d;
 pub mod printer;
 pub mod side_panel;

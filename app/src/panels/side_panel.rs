@@ -43,6 +43,8 @@ pub fn side_panel_ui(app: &mut TraceryApp, ui: &mut egui::Ui) {
         app.queue(command);
     }
     ui.separator();
+    super::jump_rings::jump_rings_ui(app, ui);
+    ui.separator();
     super::printer::printer_ui(app, ui);
     ui.separator();
     super::files::files_ui(app, ui);

@@ -26,9 +26,10 @@ pub fn status_ui(app: &mut TraceryApp, ui: &mut egui::Ui) {
                 let t = &product.topology;
                 let openings =
                     if t.loop_openings > 0 { format!(" + {} loop opening", t.loop_openings) } else { String::new() };
+                let rings = if t.jump_rings > 0 { format!(" + {} jump ring", t.jump_rings) } else { String::new() };
                 let pieces = product.facts.count("pieces").map_or(String::new(), |n| format!(", {n} pieces"));
                 ui.label(format!(
-                    "Curve {id}: {} component(s), {} hole(s){openings}{pieces} — {:.0} ms",
+                    "Curve {id}: {} component(s), {} hole(s){openings}{rings}{pieces} — {:.0} ms",
                     t.components,
                     t.holes,
                     product.timings.total_ms()

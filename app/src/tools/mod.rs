@@ -17,11 +17,13 @@ pub enum Tool {
     Edit,
     /// Move the view.
     Pan,
+    /// Click to hang a jump ring there on the nearest curve.
+    Ring,
 }
 
 impl Tool {
     /// Every tool, in toolbar order.
-    pub const ALL: [Tool; 3] = [Tool::Draw, Tool::Edit, Tool::Pan];
+    pub const ALL: [Tool; 4] = [Tool::Draw, Tool::Edit, Tool::Pan, Tool::Ring];
 
     /// Its name on the toolbar.
     pub fn label(self) -> &'static str {
@@ -29,6 +31,7 @@ impl Tool {
             Tool::Draw => "Draw",
             Tool::Edit => "Edit",
             Tool::Pan => "Pan",
+            Tool::Ring => "Ring",
         }
     }
 }

@@ -15,7 +15,7 @@ pub fn planar_topology(region: &Region, curve: &Curve) -> PatternTopology {
     if let Some(probe) = inner_probe(region, curve).filter(|_| curve.is_closed()) {
         loop_openings = region.polygons.iter().flat_map(|p| p.holes.iter()).filter(|h| ring_contains(h, probe)).count();
     }
-    PatternTopology { components, holes: holes - loop_openings, loop_openings }
+    PatternTopology { components, holes: holes - loop_openings, loop_openings, jump_rings: 0 }
 }
 
 /// A point inside the loop and outside the pattern, as far from the curve as possible.

@@ -45,4 +45,7 @@ pub struct PatternTopology {
     pub holes: usize,
     /// Central openings: holes that the loop itself goes around (0 on open curves).
     pub loop_openings: usize,
+    /// Holes of jump rings added for hanging the piece.
+    #[serde(default)]
+    pub jump_rings: usize,
 }

@@ -6,15 +6,18 @@
 //! - [`check`]: those grouped into flaws with a place and a width, and the
 //!   bridges across seams between pieces that are weaker than a limit.
 //! - [`thicken`]: thin features grown to the nozzle's width.
+//! - [`add_jump_rings`]: rings for hanging a pendant or an earring.
 //! - [`finish`]: all of it applied to a [`Product`], with the topology
 //!   counted again after thickening.
 
 mod check;
+mod jump_ring;
 mod settings;
 mod thicken;
 mod thickness;
 
 pub use check::{Bridge, Flaw, Printability, check};
+pub use jump_ring::{JumpRingError, JumpRings, RingAt, add_jump_rings};
 pub use settings::{PrintSettings, PrintSettingsError};
 pub use thicken::thicken;
 pub use thickness::{Narrow, Side, narrow_places};
@@ -70,7 +73,7 @@ pub fn finish(mut product: Product, settings: &PrintSettings) -> Product {
                 }
                 let t = &mut product.topology;
                 t.components = after.components;
-                t.holes = after.holes.saturating_sub(t.loop_openings);
+                t.holes = after.holes.saturating_sub(t.loop_openings + t.jump_rings);
                 product.fill_mm = mesh.top_faces();
                 product.mesh_mm = Some(mesh);
                 product.region_mm = thick;

@@ -221,6 +221,7 @@ pub fn synthesize_rectangle(
     let mut timings = first.timings;
     timings.absorb(&second.timings);
     let counted = count_topology(&planar.region);
-    let topology = PatternTopology { components: counted.components, holes: counted.holes, loop_openings: 0 };
+    let topology =
+        PatternTopology { components: counted.components, holes: counted.holes, ..PatternTopology::default() };
     Ok(Synthesis { warnings: [first.warnings, second.warnings].concat(), topology, planar, timings, ..second })
 }

@@ -57,6 +57,7 @@ pub fn make_product(
     } = synthesis;
     let mesh = timings.time("mesh", || extrude(&planar.region, settings.thickness_mm))?;
     let mut overlays = Overlays::default();
+    let mut path_ends_mm = Vec::new();
     let length_mm = match along {
         Along::Curve(_) => {
             let curve = &followed;
@@ -66,6 +67,10 @@ pub fn make_product(
                 (0..=steps).map(|k| curve.map(curve.length() * k as f64 / steps as f64, side * half)).collect()
             };
             overlays.band_edges_mm = vec![edge(1.0), edge(-1.0)];
+            if !curve.is_closed() {
+                let end = curve.length();
+                path_ends_mm = vec![[curve.point(0.0), -curve.tangent(0.0)], [curve.point(end), curve.tangent(end)]];
+            }
             overlays.seams_mm = band
                 .seams
                 .iter()
@@ -91,6 +96,7 @@ pub fn make_product(
         fill_mm: mesh.top_faces(),
         region_mm: planar.region,
         paths_mm: Vec::new(),
+        path_ends_mm,
         mesh_mm: Some(mesh),
         image: None,
         overlays,
