@@ -115,7 +115,7 @@ fn export_writes_a_valid_stl() {
     harness.step();
     drag(&mut harness, &circle(Pos2::new(700.0, 380.0), 90.0));
     let wave: Vec<Pos2> =
-        (0..=30).map(|k| Pos2::new(420.0 + k as f32 * 20.0, 700.0 + 30.0 * (k as f32 / 4.0).sin())).collect();
+        (0..=30).map(|k| Pos2::new(420.0 + k as f32 * 20.0, 560.0 + 30.0 * (k as f32 / 4.0).sin())).collect();
     drag(&mut harness, &wave);
     settle(&mut harness);
     assert_eq!(harness.state().doc.curves.len(), 2);
@@ -155,7 +155,7 @@ fn export_writes_a_3mf_with_one_object_per_curve_and_a_cut_svg() {
     harness.step();
     drag(&mut harness, &circle(Pos2::new(700.0, 380.0), 90.0));
     let wave: Vec<Pos2> =
-        (0..=30).map(|k| Pos2::new(420.0 + k as f32 * 20.0, 700.0 + 30.0 * (k as f32 / 4.0).sin())).collect();
+        (0..=30).map(|k| Pos2::new(420.0 + k as f32 * 20.0, 560.0 + 30.0 * (k as f32 / 4.0).sin())).collect();
     drag(&mut harness, &wave);
     settle(&mut harness);
     click_in_side_panel(&mut harness, "Export 3MF…");
@@ -206,6 +206,44 @@ fn the_ring_tool_hangs_a_pendant_from_a_jump_ring_where_clicked() {
     harness.key_press_modifiers(Modifiers::COMMAND, Key::Z);
     harness.step();
     assert!(harness.state().doc.curves[0].jump_rings.at.is_empty());
+}
+
+#[test]
+fn the_gallery_offers_distinct_solutions_and_another_one_steps_through_them() {
+    let mut harness = harness(vec![]);
+    harness.step();
+    let wave: Vec<Pos2> =
+        (0..=40).map(|k| Pos2::new(450.0 + k as f32 * 15.0, 380.0 + 50.0 * (k as f32 / 6.0).sin())).collect();
+    drag(&mut harness, &wave);
+    settle(&mut harness);
+    for _ in 0..200 {
+        let id = harness.state().doc.curves[0].id;
+        if harness.state().gallery(id).is_some() {
+            break;
+        }
+        std::thread::sleep(std::time::Duration::from_millis(20));
+        harness.step();
+    }
+    let id = harness.state().doc.curves[0].id;
+    let all = harness.state().gallery(id).expect("a gallery").clone();
+    let shown = tracery::panels::gallery::distinct(&all, false);
+    assert!(shown.len() >= 4, "only {} distinct solutions", shown.len());
+    let best = harness.state().output(id).unwrap().clone();
+    // Click the third thumbnail shown.
+    let k = shown[2];
+    // The strip takes its height from what it showed the frame before.
+    harness.run_steps(3);
+    harness.get_by_label(&format!("Solution {}", k + 1)).click();
+    harness.step();
+    settle(&mut harness);
+    let app = harness.state();
+    assert_eq!(app.doc.curves[0].mode.alternative(), k as u32);
+    let picked = app.output(id).unwrap();
+    assert_eq!(picked.facts.get("piece_sequence"), all[k].facts.get("piece_sequence"), "the picture is the pattern");
+    assert_ne!(picked.facts.get("piece_sequence"), best.facts.get("piece_sequence"));
+    // "Another one" goes on to the next distinct solution.
+    click_in_side_panel(&mut harness, "Another one");
+    assert_eq!(harness.state().doc.curves[0].mode.alternative(), shown[3] as u32);
 }
 
 #[test]

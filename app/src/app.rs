@@ -10,8 +10,8 @@ use tracery_core::DVec2;
 use crate::command::Command;
 use crate::dialogs::{Dialogs, SystemDialogs};
 use crate::document::{Document, History, ModeSettings};
-use crate::modes::{CurveJob, JobError, mode_ui};
-use crate::panels::{preview_3d, side_panel, status, top_bar};
+use crate::modes::{CurveJob, GalleryJob, JobError, mode_ui};
+use crate::panels::{gallery, preview_3d, side_panel, status, top_bar};
 use crate::state::{Caches, Persisted};
 use crate::tools::Gesture;
 use crate::worker::{JobState, Worker};
@@ -47,6 +47,8 @@ pub struct TraceryApp {
     pub(crate) state: Persisted,
     pub(crate) caches: Caches,
     pub(crate) worker: Worker<CurveJob>,
+    /// Alternatives of the selected curve, for the gallery.
+    pub(crate) gallery: Worker<GalleryJob>,
     pub(crate) gesture: Option<Gesture>,
     pub(crate) dialogs: Box<dyn Dialogs>,
     pub(crate) autosave: Autosave,
@@ -81,6 +83,7 @@ impl TraceryApp {
             state: Persisted::default(),
             caches: Caches::default(),
             worker: Worker::default(),
+            gallery: Worker::default(),
             gesture: None,
             dialogs,
             autosave: Autosave { path: autosave_path, saved: Document::default(), last: Instant::now() },
@@ -126,14 +129,42 @@ impl TraceryApp {
         self.selected = Some(id);
     }
 
-    /// Whether any curve is still being synthesized (or waiting to be).
+    /// Whether any curve is still being synthesized (or waiting to be), or
+    /// the selected curve's solutions are.
     pub fn busy(&self) -> bool {
         self.doc.curves.iter().any(|c| self.worker.is_stale(c.id))
+            || self.selected.is_some_and(|id| self.state.show_gallery && self.gallery.is_stale(id))
     }
 
     /// The latest finished product of a curve.
     pub fn output(&self, id: u64) -> Option<&Arc<tracery_core::Product>> {
         self.worker.output(id)
+    }
+
+    /// The gallery of a curve: its alternatives, the best first.
+    pub fn gallery(&self, id: u64) -> Option<&Arc<Vec<tracery_core::Product>>> {
+        self.gallery.output(id).filter(|_| !self.gallery.is_stale(id))
+    }
+
+    /// Where the gallery of a curve stands.
+    pub fn gallery_state(&self, id: u64) -> Option<&JobState<Vec<tracery_core::Product>, JobError>> {
+        self.gallery.state(id)
+    }
+
+    /// "Another one": the selected curve's next solution that looks
+    /// different from the one it has (all of them when the gallery is not
+    /// ready yet), round to the best again after the last.
+    pub fn next_alternative(&mut self) {
+        use tracery_core::vector_brush::ALTERNATIVES;
+        let current = self.settings().alternative();
+        let closed = self.selected.and_then(|id| self.doc.curve(id)).is_some_and(|c| c.closed);
+        let gallery = self.selected.and_then(|id| self.gallery(id).cloned());
+        let mut next = (current + 1) % ALTERNATIVES;
+        if let Some(all) = gallery.filter(|all| all.len() == ALTERNATIVES as usize) {
+            let shown = gallery::distinct(&all, closed);
+            next = shown.iter().map(|&k| k as u32).find(|&k| k > current).unwrap_or(0);
+        }
+        self.settings_mut().set_alternative(next);
     }
 
     /// Hangs a jump ring at `p` (mm) on the selected curve, or on the
@@ -159,7 +190,9 @@ impl TraceryApp {
     fn submit_jobs(&mut self, ctx: &egui::Context) {
         if !self.waker_set {
             let ctx = ctx.clone();
-            self.worker.set_waker(Arc::new(move || ctx.request_repaint()));
+            let wake: crate::worker::Waker = Arc::new(move || ctx.request_repaint());
+            self.worker.set_waker(wake.clone());
+            self.gallery.set_waker(wake);
             self.waker_set = true;
         }
         self.caches.refresh_smoothed(&self.doc.curves);
@@ -169,6 +202,10 @@ impl TraceryApp {
             match mode_ui(&item.mode).job(&curve, &item.mode, &self.doc, &mut self.caches) {
                 Ok(mode) => {
                     let job = CurveJob { mode, jump_rings: item.jump_rings.clone(), print: self.doc.print };
+                    if self.state.show_gallery && self.selected == Some(item.id) {
+                        let best = CurveJob { mode: job.mode.best(), ..job.clone() };
+                        self.gallery.want(item.id, GalleryJob(best), now);
+                    }
                     self.worker.want(item.id, job, now);
                 }
                 Err(e) => self.message = Some((e.to_string(), true)),
@@ -176,7 +213,11 @@ impl TraceryApp {
         }
         let ids: Vec<u64> = self.doc.curves.iter().map(|c| c.id).collect();
         self.worker.retain(&ids);
-        if self.worker.poll(now) {
+        // Only the selected curve's gallery is worth the work.
+        let wanted: Vec<u64> = self.selected.into_iter().filter(|_| self.state.show_gallery).collect();
+        self.gallery.retain(&wanted);
+        let gallery_busy = self.gallery.poll(now);
+        if self.worker.poll(now) || gallery_busy {
             ctx.request_repaint_after(BUSY_REPAINT);
         }
     }
@@ -207,6 +248,13 @@ impl eframe::App for TraceryApp {
 
         egui::Panel::top("menu").show(ui, |ui| top_bar::top_bar_ui(self, ui));
         egui::Panel::bottom("status").show(ui, |ui| status::status_ui(self, ui));
+        if self.state.show_gallery && self.selected.is_some() {
+            // A fixed height, so the layout does not jump when the solutions arrive.
+            egui::Panel::bottom("gallery")
+                .resizable(false)
+                .exact_size(gallery::STRIP_HEIGHT)
+                .show(ui, |ui| gallery::gallery_ui(self, ui));
+        }
         egui::Panel::left("controls").resizable(true).default_size(SIDE_PANEL_WIDTH).show(ui, |ui| {
             egui::ScrollArea::vertical().show(ui, |ui| side_panel::side_panel_ui(self, ui));
         });

@@ -13,7 +13,6 @@ use crate::command::Command;
 use crate::dialogs::FileKind;
 use crate::document::{Document, ModeSettings};
 use crate::files::write_atomically;
-use crate::modes::vector_brush::next_seed;
 use crate::worker::JobState;
 
 /// Runs `command` on the app.
@@ -58,9 +57,7 @@ pub fn run(app: &mut TraceryApp, command: Command) {
         Command::QuickExport => app.quick_export(),
         Command::Delete => app.delete_selected(),
         Command::Deselect => app.selected = None,
-        Command::AnotherOne => match app.settings_mut() {
-            ModeSettings::VectorBrush(v) => v.settings.seed = next_seed(v.settings.seed),
-        },
+        Command::AnotherOne => app.next_alternative(),
     }
 }
 

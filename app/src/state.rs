@@ -33,6 +33,8 @@ pub struct Persisted {
     pub show_3d: bool,
     /// Highlight thin features, narrow gaps and weak bridges on the canvas.
     pub show_print_flaws: bool,
+    /// Show the selected curve's alternative solutions under the canvas.
+    pub show_gallery: bool,
     /// Export only the selected curve.
     pub export_selected_only: bool,
     /// Where "Quick export" writes, for desktops without file dialogs.
@@ -55,6 +57,7 @@ impl Default for Persisted {
             show_seams: false,
             show_3d: false,
             show_print_flaws: true,
+            show_gallery: true,
             export_selected_only: false,
             export_folder: default_export_folder(),
             svg: SvgOptions::default(),

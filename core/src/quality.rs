@@ -129,3 +129,41 @@ pub fn seam_kinks_deg(region: &Region, seams_u: &[f64], tolerance: f64) -> Vec<f
     }
     kinks
 }
+
+/// How different two patterns look, from 0 (the same) to 1 (nowhere the
+/// same): the share of the length along which the two show different
+/// shapes. Each pattern is its pieces in order, as (shape class, width);
+/// both are scaled to the same length and compared at 720 evenly spaced
+/// places. On a loop (`closed`) the second is also turned all the way
+/// round and the smallest share is kept, so a rotated copy counts as the
+/// same pattern.
+///
+/// ```
+/// use tracery_core::quality::distinctness;
+/// let a = [(0, 1.0), (1, 1.0), (0, 1.0), (1, 1.0)];
+/// let b = [(1, 1.0), (0, 1.0), (1, 1.0), (0, 1.0)];
+/// assert_eq!(distinctness(&a, &a, false), 0.0);
+/// assert_eq!(distinctness(&a, &b, false), 1.0);
+/// assert_eq!(distinctness(&a, &b, true), 0.0);
+/// ```
+pub fn distinctness(a: &[(usize, f64)], b: &[(usize, f64)], closed: bool) -> f64 {
+    const SAMPLES: usize = 720;
+    let sample = |pieces: &[(usize, f64)]| -> Vec<usize> {
+        let total: f64 = pieces.iter().map(|p| p.1).sum();
+        let mut out = Vec::with_capacity(SAMPLES);
+        let (mut k, mut end) = (0, pieces.first().map_or(0.0, |p| p.1));
+        for s in 0..SAMPLES {
+            let at = (s as f64 + 0.5) / SAMPLES as f64 * total;
+            while at > end && k + 1 < pieces.len() {
+                k += 1;
+                end += pieces[k].1;
+            }
+            out.push(pieces.get(k).map_or(usize::MAX, |p| p.0));
+        }
+        out
+    };
+    let (sa, sb) = (sample(a), sample(b));
+    let differing = |shift: usize| (0..SAMPLES).filter(|&i| sa[i] != sb[(i + shift) % SAMPLES]).count();
+    let fewest = if closed { (0..SAMPLES).map(differing).min().unwrap_or(0) } else { differing(0) };
+    fewest as f64 / SAMPLES as f64
+}

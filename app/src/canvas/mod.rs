@@ -8,7 +8,7 @@ mod view;
 
 pub use grid::grid_ui;
 pub use hit::distance_to;
-pub use paint::{fill, polyline};
+pub use paint::{fill, fill_fitted, polyline};
 pub use view::{MAX_POINTS_PER_MM, MIN_POINTS_PER_MM, View};
 
 use egui::{Color32, PointerButton, Sense, Stroke};

@@ -27,6 +27,25 @@ pub fn fill(view: &View, rect: Rect, triangles: &[[DVec2; 3]], color: Color32) -
     Shape::mesh(mesh)
 }
 
+/// Filled triangles in millimetres fitted into `rect` (a thumbnail).
+pub fn fill_fitted(rect: Rect, bounds: tracery_core::geom::Rect, triangles: &[[DVec2; 3]], color: Color32) -> Shape {
+    let scale = (f64::from(rect.width()) / bounds.width()).min(f64::from(rect.height()) / bounds.height());
+    let centre = bounds.center();
+    let to_screen = |p: DVec2| {
+        let q = (p - centre) * scale;
+        rect.center() + egui::vec2(q.x as f32, -q.y as f32)
+    };
+    let mut mesh = egui::Mesh::default();
+    for t in triangles {
+        let base = mesh.vertices.len() as u32;
+        for p in t {
+            mesh.colored_vertex(to_screen(*p), color);
+        }
+        mesh.add_triangle(base, base + 1, base + 2);
+    }
+    Shape::mesh(mesh)
+}
+
 /// Thin features (red), narrow gaps (blue) and weak bridges (orange): each
 /// narrow cross-section drawn across, and a ring where each flaw is
 /// narrowest, large enough to find at any zoom. Bridges get no ring: on a

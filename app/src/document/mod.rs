@@ -80,9 +80,26 @@ impl ModeSettings {
     pub fn for_new_curve(&self) -> ModeSettings {
         let mut out = self.clone();
         match &mut out {
-            ModeSettings::VectorBrush(v) => v.settings.seed = 0,
+            ModeSettings::VectorBrush(v) => {
+                v.settings.seed = 0;
+                v.settings.alternative = 0;
+            }
         }
         out
+    }
+
+    /// Which of the gallery's solutions the curve uses (0: the best).
+    pub fn alternative(&self) -> u32 {
+        match self {
+            ModeSettings::VectorBrush(v) => v.settings.alternative,
+        }
+    }
+
+    /// Uses the gallery's solution `k`.
+    pub fn set_alternative(&mut self, k: u32) {
+        match self {
+            ModeSettings::VectorBrush(v) => v.settings.alternative = k,
+        }
     }
 }
 

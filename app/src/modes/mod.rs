@@ -131,6 +131,38 @@ impl ModeJob {
             ModeJob::VectorBrush(job) => Ok(job.run(control)?),
         }
     }
+
+    /// The mode's alternatives for the gallery, the best first (a mode
+    /// without alternatives gives its one result).
+    pub fn alternatives(&self, control: &Control) -> Result<Vec<Product>, JobError> {
+        match self {
+            ModeJob::VectorBrush(job) => Ok(job.alternatives(control)?),
+        }
+    }
+
+    /// The same job asking for the best result rather than an alternative
+    /// (so that choosing from the gallery does not compute the gallery again).
+    pub fn best(&self) -> ModeJob {
+        match self {
+            ModeJob::VectorBrush(job) => ModeJob::VectorBrush(job.best()),
+        }
+    }
+}
+
+/// The gallery of a curve: its mode's alternatives, each with its jump rings
+/// and checked against the printer, as the curve's own result is.
+#[derive(Clone, Debug, PartialEq)]
+pub struct GalleryJob(pub CurveJob);
+
+impl Job for GalleryJob {
+    type Output = Vec<Product>;
+    type Error = JobError;
+
+    fn run(&self, control: &Control) -> Result<Vec<Product>, JobError> {
+        let CurveJob { mode, jump_rings, print } = &self.0;
+        jump_rings.validate(print)?;
+        mode.alternatives(control)?.into_iter().map(|p| Ok(finish(add_jump_rings(p, jump_rings)?, print))).collect()
+    }
 }
 
 /// What the worker computes for a curve: its mode's job, then the

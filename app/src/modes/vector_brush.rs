@@ -6,7 +6,9 @@ use egui::RichText;
 use tracery_core::Product;
 use tracery_core::control::Control;
 use tracery_core::curve::{Along, Curve};
-use tracery_core::vector_brush::{Exemplar, Settings, SlicingMode, SynthesisError, Target, make_product};
+use tracery_core::vector_brush::{
+    ALTERNATIVES, Exemplar, Settings, SlicingMode, SynthesisError, Target, make_alternatives, make_product,
+};
 
 use super::{ModeEnv, ModeJob, ModeUi};
 use crate::command::Command;
@@ -44,6 +46,19 @@ impl VectorBrushJob {
     /// Runs the vector brush.
     pub fn run(&self, control: &Control) -> Result<Product, SynthesisError> {
         make_product(&self.exemplar, &Along::Curve(Curve::clone(&self.curve)), &self.settings, control)
+    }
+
+    /// Every alternative the gallery offers, the best first.
+    pub fn alternatives(&self, control: &Control) -> Result<Vec<Product>, SynthesisError> {
+        let along = Along::Curve(Curve::clone(&self.curve));
+        make_alternatives(&self.exemplar, &along, &self.settings, ALTERNATIVES, control)
+    }
+
+    /// The same job for the best pattern.
+    pub fn best(&self) -> VectorBrushJob {
+        let mut settings = self.settings.clone();
+        settings.alternative = 0;
+        VectorBrushJob { settings, ..self.clone() }
     }
 }
 
@@ -87,17 +102,18 @@ pub fn pattern_ui(ui: &mut egui::Ui, s: &mut Settings, commands: &mut Vec<Comman
     ui.add(egui::Slider::new(&mut s.min_portal_mm, 0.0..=3.0).text("Min. portal (mm)"));
     ui.add(egui::Slider::new(&mut s.thickness_mm, 0.4..=10.0).text("Thickness (mm)"));
     ui.horizontal(|ui| {
-        let label = ui.label("Seed");
-        ui.add(egui::DragValue::new(&mut s.seed)).labelled_by(label.id);
+        ui.label(format!("Solution {} of {ALTERNATIVES}", s.alternative + 1))
+            .on_hover_text("1 is the best; the gallery below the canvas shows them all");
         if Command::AnotherOne.button(ui, true) {
             commands.push(Command::AnotherOne);
         }
     });
-}
-
-/// The next seed after `seed`, for "Another one": never 0 (the best pattern).
-pub fn next_seed(seed: u64) -> u64 {
-    seed.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407) % 1_000_000 + 1
+    ui.horizontal(|ui| {
+        let label = ui.label("Seed");
+        ui.add(egui::DragValue::new(&mut s.seed))
+            .labelled_by(label.id)
+            .on_hover_text("0 keeps the solutions as they are; any other number perturbs them at random");
+    });
 }
 
 impl ModeUi for VectorBrushUi {

@@ -3,6 +3,7 @@
 
 pub mod exemplar_picker;
 pub mod files;
+pub mod gallery;
 pub mod jump_rings;
 pub mod preview_3d;
 pub mod printer;

@@ -13,6 +13,7 @@ pub fn top_bar_ui(app: &mut TraceryApp, ui: &mut egui::Ui) {
         ui.checkbox(&mut app.state.show_band, "Band outline");
         ui.checkbox(&mut app.state.show_seams, "Piece seams");
         ui.checkbox(&mut app.state.show_3d, "3D preview");
+        ui.checkbox(&mut app.state.show_gallery, "Solutions");
         if let Some(p) = &app.state.project_path {
             ui.separator();
             ui.label(RichText::new(p.display().to_string()).weak());

@@ -42,11 +42,11 @@ pub use error::{ExemplarError, SliceError, SolveError, Unmet};
 pub use exemplar::{Exemplar, LoadOptions};
 pub use matching::{BREAK_COST, MATCH_WEIGHT, PairCost};
 pub use piece::{Piece, PieceSet};
-pub use pipeline::{Synthesis, SynthesisError, synthesize, synthesize_rectangle};
+pub use pipeline::{Synthesis, SynthesisError, synthesize, synthesize_alternatives, synthesize_rectangle};
 pub use portal::{Portal, portals_at};
 pub use positioning::{position_offsets, spread_offsets};
-pub use product::make_product;
-pub use settings::{InvalidSetting, Settings};
+pub use product::{make_alternatives, make_product};
+pub use settings::{ALTERNATIVES, InvalidSetting, Settings};
 pub use slicing::{MAX_PORTALS, SliceOptions, SlicingMode, cut_positions, topology_events};
 pub use solver::{
     BAND_MARGIN, CurveKind, LengthGrid, STATE_BYTES, Solution, SolveOptions, Target, solve, tolerance_levels,

@@ -110,6 +110,32 @@ pub const RESOLUTION_MM: f64 = 0.01;
 /// the corner instead of folding over itself.
 pub const CORNER_RADIUS: f64 = 1.25;
 
+/// The first `count` of the alternatives (see [`Settings::alternative`])
+/// from `exemplar` along `curve`, sharing one analysis of the exemplar:
+/// what a gallery shows. Settings are checked; `settings.alternative` is
+/// not used.
+///
+/// ```
+/// use tracery_core::control::Control;
+/// use tracery_core::curve::Curve;
+/// use tracery_core::vector_brush::{Settings, builtin, synthesize_alternatives};
+/// let curve = Curve::line(120.0).unwrap();
+/// let all = synthesize_alternatives(&builtin("vine").unwrap(), &curve, &Settings::default(), 3, &Control::default()).unwrap();
+/// assert_eq!(all.len(), 3);
+/// assert_ne!(all[0].solution.pieces, all[1].solution.pieces);
+/// ```
+pub fn synthesize_alternatives(
+    exemplar: &Exemplar,
+    curve: &Curve,
+    settings: &Settings,
+    count: u32,
+    control: &Control,
+) -> Result<Vec<Synthesis>, SynthesisError> {
+    settings.validate()?;
+    let scale = settings.mm_per_unit(exemplar.height());
+    alternatives_at_scale(exemplar, curve, settings, scale, count, true, control)
+}
+
 fn synthesize_at_scale(
     exemplar: &Exemplar,
     curve: &Curve,
@@ -117,6 +143,21 @@ fn synthesize_at_scale(
     scale: f64,
     control: &Control,
 ) -> Result<Synthesis, SynthesisError> {
+    let mut all = alternatives_at_scale(exemplar, curve, settings, scale, settings.alternative + 1, false, control)?;
+    Ok(all.pop().expect("at least one alternative"))
+}
+
+/// The first `count` alternatives; with `every` false only the last one is
+/// turned into geometry (the others only steer the search).
+fn alternatives_at_scale(
+    exemplar: &Exemplar,
+    curve: &Curve,
+    settings: &Settings,
+    scale: f64,
+    count: u32,
+    every: bool,
+    control: &Control,
+) -> Result<Vec<Synthesis>, SynthesisError> {
     if !(scale.is_finite() && scale > 0.0) {
         return Err(InvalidSetting(format!("the scale {scale} mm per unit must be positive")).into());
     }
@@ -145,51 +186,69 @@ fn synthesize_at_scale(
     options.variety = settings.variety;
     options.seed = settings.seed;
     options.band_height = settings.band_mm / scale;
-    let solution = timings.time("solve", || super::solve(&set, &options, control))?;
-
-    let (band, planar, topology) = timings.time("geometry", || {
-        let offsets = spread_offsets(&set, &solution.pieces, &solution.offsets, kind);
-        let mut band =
-            stitch(&set, &solution.pieces, &offsets, curve.length() / scale, kind, MAPPING_TOLERANCE_MM / scale);
-        // The solver kept every piece within the band and stitching moves
-        // endpoints by half their mismatch; what still pokes out (a loop's
-        // closing error spread over its seams) is pressed back in, so the
-        // pattern never strays from the curve. Never below the exemplar's
-        // own half-height: a person who scaled it past the band asked for that.
-        let limit = (0.5 * options.band_height).max(0.5 * exemplar.height()) * (1.0 + BAND_MARGIN);
-        band.fit_within(limit);
-        let mut planar = map_along(&band.region, scale, curve);
-        planar.region = without_slivers(&planar.region, RESOLUTION_MM);
-        let topology = planar_topology(&planar.region, curve);
-        (band, planar, topology)
-    });
-
-    let mut warnings = planar.warnings.clone();
-    let stretch = curve.length() / (solution.length * scale) - 1.0;
-    if stretch.abs() > LENGTH_WARNING {
-        warnings.push(Warning::LengthMismatch { stretched: stretch > 0.0, percent: stretch.abs() * 100.0 });
+    let mut solutions = Vec::new();
+    for k in 0..count.max(1) {
+        let solution = timings.time("solve", || super::solve(&set, &options, control))?;
+        options.avoid.push(solution.pieces.clone());
+        if every || k + 1 == count.max(1) {
+            solutions.push(solution);
+        }
     }
-    let (planned_components, planned_holes) = (solution.components as usize, solution.holes as usize);
-    if topology.components != planned_components || topology.holes != planned_holes {
-        warnings.push(Warning::TopologyDiffers {
-            planned_components,
-            planned_holes,
-            counted_components: topology.components,
-            counted_holes: topology.holes,
+    let build = |solution: Solution, mut timings: Timings| -> Synthesis {
+        let (band, planar, topology) = timings.time("geometry", || {
+            let offsets = spread_offsets(&set, &solution.pieces, &solution.offsets, kind);
+            let mut band =
+                stitch(&set, &solution.pieces, &offsets, curve.length() / scale, kind, MAPPING_TOLERANCE_MM / scale);
+            // The solver kept every piece within the band and stitching moves
+            // endpoints by half their mismatch; what still pokes out (a loop's
+            // closing error spread over its seams) is pressed back in, so the
+            // pattern never strays from the curve. Never below the exemplar's
+            // own half-height: a person who scaled it past the band asked for that.
+            let limit = (0.5 * options.band_height).max(0.5 * exemplar.height()) * (1.0 + BAND_MARGIN);
+            band.fit_within(limit);
+            let mut planar = map_along(&band.region, scale, curve);
+            planar.region = without_slivers(&planar.region, RESOLUTION_MM);
+            let topology = planar_topology(&planar.region, curve);
+            (band, planar, topology)
         });
-    }
-    Ok(Synthesis {
-        scale_mm_per_unit: scale,
-        piece_count: set.len(),
-        shape_classes: solution.pieces.iter().map(|&p| set.shape_classes()[p]).collect(),
-        solution,
-        band,
-        planar,
-        curve: curve.clone(),
-        topology,
-        timings,
-        warnings,
-    })
+
+        let mut warnings = planar.warnings.clone();
+        let stretch = curve.length() / (solution.length * scale) - 1.0;
+        if stretch.abs() > LENGTH_WARNING {
+            warnings.push(Warning::LengthMismatch { stretched: stretch > 0.0, percent: stretch.abs() * 100.0 });
+        }
+        let (planned_components, planned_holes) = (solution.components as usize, solution.holes as usize);
+        if topology.components != planned_components || topology.holes != planned_holes {
+            warnings.push(Warning::TopologyDiffers {
+                planned_components,
+                planned_holes,
+                counted_components: topology.components,
+                counted_holes: topology.holes,
+            });
+        }
+        Synthesis {
+            scale_mm_per_unit: scale,
+            piece_count: set.len(),
+            shape_classes: solution.pieces.iter().map(|&p| set.shape_classes()[p]).collect(),
+            solution,
+            band,
+            planar,
+            curve: curve.clone(),
+            topology,
+            timings,
+            warnings,
+        }
+    };
+    let last = solutions.len().saturating_sub(1);
+    Ok(solutions
+        .into_iter()
+        .enumerate()
+        .map(|(k, solution)| {
+            // Analysis and searches are shared: the last carries their time.
+            let shared = if k == last { timings.clone() } else { Timings::default() };
+            build(solution, shared)
+        })
+        .collect())
 }
 
 /// Synthesizes a rectangle `width_mm` × `height_mm` in two passes (section

@@ -2,7 +2,9 @@
 
 use glam::DVec2;
 
-use super::{Exemplar, Settings, Synthesis, SynthesisError, Target, synthesize, synthesize_rectangle};
+use super::{
+    Exemplar, Settings, Synthesis, SynthesisError, Target, synthesize, synthesize_alternatives, synthesize_rectangle,
+};
 use crate::Product;
 use crate::control::Control;
 use crate::curve::Along;
@@ -43,6 +45,46 @@ pub fn make_product(
             synthesize_rectangle(exemplar, *width_mm, *height_mm, settings, control)?
         }
     };
+    to_product(synthesis, along, settings)
+}
+
+/// The first `count` alternatives along `along` as products (see
+/// [`Settings::alternative`]): the gallery's choices, the best first. Along
+/// a curve they share one analysis and one chain of searches.
+///
+/// ```
+/// use tracery_core::control::Control;
+/// use tracery_core::curve::Along;
+/// use tracery_core::vector_brush::{Settings, builtin, make_alternatives};
+/// let along = Along::parse("line:100").unwrap();
+/// let all = make_alternatives(&builtin("vine").unwrap(), &along, &Settings::default(), 4, &Control::default()).unwrap();
+/// assert_eq!(all.len(), 4);
+/// assert!(all.iter().all(|p| p.topology.components == 1));
+/// ```
+pub fn make_alternatives(
+    exemplar: &Exemplar,
+    along: &Along,
+    settings: &Settings,
+    count: u32,
+    control: &Control,
+) -> Result<Vec<Product>, SynthesisError> {
+    match along {
+        Along::Curve(curve) => synthesize_alternatives(exemplar, curve, settings, count, control)?
+            .into_iter()
+            .map(|s| to_product(s, along, settings))
+            .collect(),
+        Along::Rectangle { .. } => (0..count)
+            .map(|k| {
+                let mut one = settings.clone();
+                one.alternative = k;
+                make_product(exemplar, along, &one, control)
+            })
+            .collect(),
+    }
+}
+
+/// A synthesis as a product: its solid, overlays and the figures a report shows.
+fn to_product(synthesis: Synthesis, along: &Along, settings: &Settings) -> Result<Product, SynthesisError> {
     let Synthesis {
         scale_mm_per_unit,
         piece_count,
@@ -53,6 +95,7 @@ pub fn make_product(
         topology,
         mut timings,
         warnings,
+        shape_classes,
         ..
     } = synthesis;
     let mesh = timings.time("mesh", || extrude(&planar.region, settings.thickness_mm))?;
@@ -90,6 +133,8 @@ pub fn make_product(
     facts.push("cost", Fact::Number(solution.cost));
     facts.push("pieces", Fact::Count(solution.pieces.len()));
     facts.push("piece_sequence", Fact::Indices(solution.pieces.clone()));
+    facts.push("shape_sequence", Fact::Indices(shape_classes));
+    facts.push("alternative", Fact::Count(settings.alternative as usize));
     facts.push("pieces_in_exemplar", Fact::Count(piece_count));
     facts.push("dp_states", Fact::Count(solution.states));
     Ok(Product {

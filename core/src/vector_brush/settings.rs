@@ -43,9 +43,16 @@ pub struct Settings {
     pub event_grouping: f64,
     /// Printed thickness, mm.
     pub thickness_mm: f64,
-    /// 0 for the best pattern; any other value gives another one.
+    /// 0 for the best pattern; any other value perturbs it at random.
     pub seed: u64,
+    /// Which of the [`ALTERNATIVES`] to make: 0 is the best pattern; each
+    /// next one is made to differ from all before it (see
+    /// `SolveOptions::avoid`), so it costs one more search.
+    pub alternative: u32,
 }
+
+/// How many alternatives the gallery offers (the best one included).
+pub const ALTERNATIVES: u32 = 6;
 
 impl Default for Settings {
     fn default() -> Self {
@@ -61,6 +68,7 @@ impl Default for Settings {
             event_grouping: SliceOptions::default().event_grouping,
             thickness_mm: 2.0,
             seed: 0,
+            alternative: 0,
         }
     }
 }
@@ -94,6 +102,13 @@ impl Settings {
         }
         if !(self.event_grouping.is_finite() && self.event_grouping >= 0.0) {
             return Err(InvalidSetting(format!("event grouping must be zero or more, not {}", self.event_grouping)));
+        }
+        if self.alternative >= ALTERNATIVES {
+            return Err(InvalidSetting(format!(
+                "the alternative must be between 0 and {}, not {}",
+                ALTERNATIVES - 1,
+                self.alternative
+            )));
         }
         Ok(())
     }

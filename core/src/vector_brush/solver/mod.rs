@@ -128,6 +128,14 @@ pub struct SolveOptions {
     /// Zero for the best solution; any other value perturbs the seam costs
     /// along the curve to give another, slightly worse, pattern.
     pub seed: u64,
+    /// Earlier solutions (piece sequences) to differ from: every seam that
+    /// joins two shapes in the order one of them did pays
+    /// [`SolveOptions::diversity`] times the mean seam cost, once per
+    /// solution that used it. Position plays no part, so a loop's rotated
+    /// copy of an earlier pattern pays in full.
+    pub avoid: Vec<Vec<usize>>,
+    /// Weight of reusing an earlier solution's seams, in mean seam costs.
+    pub diversity: f64,
 }
 
 impl SolveOptions {
@@ -147,6 +155,8 @@ impl SolveOptions {
             length_quantum: None,
             max_states: 2_000_000,
             seed: 0,
+            avoid: Vec::new(),
+            diversity: 1.0,
         }
     }
 }
@@ -212,6 +222,17 @@ pub fn solve(set: &PieceSet, options: &SolveOptions, control: &Control) -> Resul
         let (smaller, originals) = set.distinct_shapes();
         reduced = smaller;
         (&reduced, Some(originals))
+    };
+    // Earlier solutions in the searched set's indices (one per shape).
+    let searched;
+    let options = match &originals {
+        Some(originals) if !options.avoid.is_empty() => {
+            let to_search = |p: usize| originals.binary_search(&set.shape_classes()[p]).unwrap_or(0);
+            let avoid = options.avoid.iter().map(|s| s.iter().map(|&p| to_search(p)).collect()).collect();
+            searched = SolveOptions { avoid, ..options.clone() };
+            &searched
+        }
+        _ => options,
     };
     match search_all(search_set, options, control)? {
         Some(mut solution) => {

@@ -30,6 +30,8 @@ pub(super) struct Problem<'a> {
     /// Most a piece may be held back from its alignment to stay in the band.
     max_hold: f32,
     jitter: f64,
+    /// What each seam pays for having been used by earlier solutions.
+    reuse: Vec<f64>,
     similarity: Similarity,
     states: &'a AtomicUsize,
     created: &'a AtomicUsize,
@@ -114,7 +116,7 @@ impl Problem<'_> {
     }
 
     fn seam_cost(&self, a: usize, b: usize, length: u32) -> f64 {
-        let base = self.cost[a * self.n() + b];
+        let base = self.cost[a * self.n() + b] + self.reuse[a * self.n() + b];
         if self.options.seed == 0 || self.jitter == 0.0 {
             return base;
         }
@@ -337,7 +339,7 @@ impl<'p> Search<'p> {
             if raw.abs() > problem.max_hold {
                 return;
             }
-            total += closing;
+            total += closing + problem.reuse[seam];
             if options.band_height.is_finite() {
                 total += problem.misalignment_cost(raw);
             }
@@ -414,7 +416,21 @@ pub(super) fn search_all(
         }
     }
     let compatible_costs: Vec<f64> = cost.iter().copied().filter(|c| !c.is_nan()).collect();
-    let jitter = 0.5 * compatible_costs.iter().sum::<f64>() / compatible_costs.len().max(1) as f64;
+    let mean_cost = compatible_costs.iter().sum::<f64>() / compatible_costs.len().max(1) as f64;
+    let jitter = 0.5 * mean_cost;
+    // Exemplars whose seams all match perfectly still pay for reuse.
+    let mean_cost = mean_cost.max(1e-3 * MATCH_WEIGHT);
+    let mut reuse = vec![0.0; n * n];
+    for earlier in &options.avoid {
+        let closing = (options.curve == CurveKind::Closed).then(|| (earlier.last(), earlier.first()));
+        let seams = earlier.windows(2).map(|w| (w[0], w[1])).chain(closing.and_then(|(a, b)| Some((*a?, *b?))));
+        let mut seen = vec![false; n * n];
+        for (a, b) in seams.filter(|&(a, b)| a < n && b < n) {
+            if !std::mem::replace(&mut seen[a * n + b], true) {
+                reuse[a * n + b] += options.diversity * mean_cost;
+            }
+        }
+    }
     let states = AtomicUsize::new(0);
     let created = AtomicUsize::new(0);
     let work_done = AtomicUsize::new(0);
@@ -437,6 +453,7 @@ pub(super) fn search_all(
         allowance: set.pieces.iter().map(|p| band_allowance(options.band_height, p.extent()) as f32).collect(),
         max_hold: (MAX_HOLD * options.band_height).min(f64::from(f32::MAX)) as f32,
         jitter,
+        reuse,
         similarity: Similarity::new(options.autocorrelation_sigma),
         states: &states,
         created: &created,
