@@ -158,10 +158,21 @@ fn alternatives_at_scale(
     every: bool,
     control: &Control,
 ) -> Result<Vec<Synthesis>, SynthesisError> {
+    let (set, timings) = analyse(exemplar, settings, scale)?;
+    laid_out(&set, exemplar, curve, settings, scale, count, every, &[], timings, control)
+}
+
+/// The exemplar cut into pieces at `scale` (mm per exemplar unit), with the
+/// time it took: what every pattern from the same exemplar and settings
+/// shares, whatever the curve.
+pub(crate) fn analyse(
+    exemplar: &Exemplar,
+    settings: &Settings,
+    scale: f64,
+) -> Result<(PieceSet, Timings), SynthesisError> {
     if !(scale.is_finite() && scale > 0.0) {
         return Err(InvalidSetting(format!("the scale {scale} mm per unit must be positive")).into());
     }
-    let curve = &curve.with_rounded_corners(CORNER_RADIUS * 0.5 * settings.band_mm);
     let mut timings = Timings::default();
     let mut slicing = SliceOptions::default();
     slicing.mode = settings.slicing;
@@ -176,7 +187,26 @@ fn alternatives_at_scale(
                 .unwrap_or_else(|_| exemplar.clone());
         PieceSet::new(&settled, &slicing)
     })?;
+    Ok((set, timings))
+}
 
+/// Patterns from an analysed exemplar along `curve`: the first `count`
+/// alternatives (only the last turned into geometry unless `every`), the
+/// first of them beginning with `prefix` where it can.
+#[allow(clippy::too_many_arguments)]
+pub(crate) fn laid_out(
+    set: &PieceSet,
+    exemplar: &Exemplar,
+    curve: &Curve,
+    settings: &Settings,
+    scale: f64,
+    count: u32,
+    every: bool,
+    prefix: &[usize],
+    mut timings: Timings,
+    control: &Control,
+) -> Result<Vec<Synthesis>, SynthesisError> {
+    let curve = &curve.with_rounded_corners(CORNER_RADIUS * 0.5 * settings.band_mm);
     let kind = if curve.is_closed() { CurveKind::Closed } else { CurveKind::Open };
     let mut options = SolveOptions::new(curve.length() / scale);
     options.curve = kind;
@@ -186,9 +216,11 @@ fn alternatives_at_scale(
     options.variety = settings.variety;
     options.seed = settings.seed;
     options.band_height = settings.band_mm / scale;
+    options.prefix = prefix.to_vec();
     let mut solutions = Vec::new();
     for k in 0..count.max(1) {
-        let solution = timings.time("solve", || super::solve(&set, &options, control))?;
+        let solution = timings.time("solve", || super::solve(set, &options, control))?;
+        options.prefix.clear();
         options.avoid.push(solution.pieces.clone());
         if every || k + 1 == count.max(1) {
             solutions.push(solution);
@@ -196,9 +228,9 @@ fn alternatives_at_scale(
     }
     let build = |solution: Solution, mut timings: Timings| -> Synthesis {
         let (band, planar, topology) = timings.time("geometry", || {
-            let offsets = spread_offsets(&set, &solution.pieces, &solution.offsets, kind);
+            let offsets = spread_offsets(set, &solution.pieces, &solution.offsets, kind);
             let mut band =
-                stitch(&set, &solution.pieces, &offsets, curve.length() / scale, kind, MAPPING_TOLERANCE_MM / scale);
+                stitch(set, &solution.pieces, &offsets, curve.length() / scale, kind, MAPPING_TOLERANCE_MM / scale);
             // The solver kept every piece within the band and stitching moves
             // endpoints by half their mismatch; what still pokes out (a loop's
             // closing error spread over its seams) is pressed back in, so the

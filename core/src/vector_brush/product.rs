@@ -84,7 +84,7 @@ pub fn make_alternatives(
 }
 
 /// A synthesis as a product: its solid, overlays and the figures a report shows.
-fn to_product(synthesis: Synthesis, along: &Along, settings: &Settings) -> Result<Product, SynthesisError> {
+pub(crate) fn to_product(synthesis: Synthesis, along: &Along, settings: &Settings) -> Result<Product, SynthesisError> {
     let Synthesis {
         scale_mm_per_unit,
         piece_count,

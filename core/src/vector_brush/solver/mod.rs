@@ -136,6 +136,11 @@ pub struct SolveOptions {
     pub avoid: Vec<Vec<usize>>,
     /// Weight of reusing an earlier solution's seams, in mean seam costs.
     pub diversity: f64,
+    /// On open curves, pieces the pattern must begin with (a pattern
+    /// growing while it is drawn keeps what is already laid): the search
+    /// only extends them. Where they cannot be extended to a pattern that
+    /// meets the targets, the search starts again from nothing.
+    pub prefix: Vec<usize>,
 }
 
 impl SolveOptions {
@@ -157,6 +162,7 @@ impl SolveOptions {
             seed: 0,
             avoid: Vec::new(),
             diversity: 1.0,
+            prefix: Vec::new(),
         }
     }
 }
@@ -223,18 +229,23 @@ pub fn solve(set: &PieceSet, options: &SolveOptions, control: &Control) -> Resul
         reduced = smaller;
         (&reduced, Some(originals))
     };
-    // Earlier solutions in the searched set's indices (one per shape).
+    // Earlier solutions and the prefix in the searched set's indices (one per shape).
     let searched;
     let options = match &originals {
-        Some(originals) if !options.avoid.is_empty() => {
+        Some(originals) if !options.avoid.is_empty() || !options.prefix.is_empty() => {
             let to_search = |p: usize| originals.binary_search(&set.shape_classes()[p]).unwrap_or(0);
             let avoid = options.avoid.iter().map(|s| s.iter().map(|&p| to_search(p)).collect()).collect();
-            searched = SolveOptions { avoid, ..options.clone() };
+            let prefix = options.prefix.iter().map(|&p| to_search(p)).collect();
+            searched = SolveOptions { avoid, prefix, ..options.clone() };
             &searched
         }
         _ => options,
     };
-    match search_all(search_set, options, control)? {
+    let mut found = search_all(search_set, options, control)?;
+    if found.is_none() && !options.prefix.is_empty() {
+        found = search_all(search_set, &SolveOptions { prefix: Vec::new(), ..options.clone() }, control)?;
+    }
+    match found {
         Some(mut solution) => {
             if let Some(originals) = originals {
                 for p in &mut solution.pieces {

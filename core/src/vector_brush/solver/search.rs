@@ -258,7 +258,11 @@ impl<'p> Search<'p> {
         let problem = self.problem;
         let n = problem.n();
         let (max_len, max_key) = (self.window.1, self.max_key);
-        for &s in self.starts {
+        let mut first_key = 0;
+        if let Some(key) = self.seed_prefix()? {
+            first_key = key;
+        }
+        for &s in self.starts.iter().filter(|_| first_key == 0) {
             let length = problem.widths[s];
             let d = problem.clamp(&problem.set.pieces[s].descriptor);
             if length > max_len || !problem.viable(&d) {
@@ -270,7 +274,7 @@ impl<'p> Search<'p> {
             self.add(key, state, 0.0, |_| Autocorrelation::default().push(s, &problem.similarity))?;
         }
         let mut open: Vec<u32> = Vec::new();
-        for key in 0..=max_key {
+        for key in first_key..=max_key {
             problem.control.check()?;
             problem.report_progress();
             let slot = key as usize % self.buckets.len();
@@ -356,6 +360,72 @@ impl<'p> Search<'p> {
         if self.best.is_none_or(|(b, _)| total < b) {
             self.best = Some((total, index));
         }
+    }
+
+    /// Lays the fixed beginning (`SolveOptions::prefix`, open curves) as a
+    /// chain of states, the search growing only from its last one. Returns
+    /// that state's key, or `None` when there is no prefix or it cannot be
+    /// laid (the search then starts from scratch).
+    fn seed_prefix(&mut self) -> Result<Option<u32>, SolveError> {
+        let problem = self.problem;
+        let prefix = &problem.options.prefix;
+        if prefix.is_empty() || problem.options.curve != CurveKind::Open || prefix.iter().any(|&p| p >= problem.n()) {
+            return Ok(None);
+        }
+        let s = prefix[0];
+        if !problem.set.pieces[s].left.is_empty() {
+            return Ok(None);
+        }
+        let n = problem.n();
+        let d = problem.clamp(&problem.set.pieces[s].descriptor);
+        if !problem.viable(&d) {
+            return Ok(None);
+        }
+        let mut state = State {
+            cost: 0.0,
+            length: problem.widths[s],
+            parent: NO_PARENT,
+            descriptor: self.interner.intern(d),
+            delta: 0.0,
+            piece: s as u16,
+        };
+        let mut correlation = Autocorrelation::default().push(s, &problem.similarity);
+        let (arena_start, auto_start) = (self.arena.len(), self.auto.len());
+        for &b in &prefix[1..] {
+            let a = usize::from(state.piece);
+            let raw = state.delta * problem.keep[a * n + b] + problem.tau[a * n + b] as f32;
+            let held = problem.hold_in_band(raw, b);
+            let descriptor = problem.join(&mut self.interner, state.descriptor, b);
+            let (Some((delta, held_back)), false) = (held, descriptor == PRUNED || problem.cost[a * n + b].is_nan())
+            else {
+                self.arena.truncate(arena_start);
+                self.auto.truncate(auto_start);
+                return Ok(None);
+            };
+            // Chain states live in the arena only, for backtracking.
+            self.arena.push(state);
+            if self.variety() {
+                self.auto.push(correlation);
+            }
+            let key = problem.grid.key(state.length).max(1);
+            state = State {
+                cost: state.cost + problem.seam_cost(a, b, key) + held_back,
+                length: state.length + problem.widths[b],
+                parent: (self.arena.len() - 1) as u32,
+                descriptor,
+                delta,
+                piece: b as u16,
+            };
+            correlation = correlation.push(b, &problem.similarity);
+        }
+        if state.length > self.window.1 {
+            self.arena.truncate(arena_start);
+            self.auto.truncate(auto_start);
+            return Ok(None);
+        }
+        let key = problem.grid.key(state.length).max(1);
+        self.add(key, state, 0.0, |_| correlation)?;
+        Ok(Some(key))
     }
 
     fn backtrack(&self, end: u32, total: f64) -> Found {
