@@ -247,6 +247,38 @@ fn the_gallery_offers_distinct_solutions_and_another_one_steps_through_them() {
 }
 
 #[test]
+fn the_pattern_grows_under_the_pointer_while_the_stroke_is_drawn() {
+    let mut harness = harness(vec![]);
+    harness.step();
+    let wave: Vec<Pos2> =
+        (0..=50).map(|k| Pos2::new(420.0 + k as f32 * 10.0, 380.0 + 40.0 * (k as f32 / 7.0).sin())).collect();
+    harness.hover_at(wave[0]);
+    harness.step();
+    press(&harness, wave[0], true);
+    harness.step();
+    let mut seen = Vec::new();
+    for &p in &wave[1..] {
+        harness.hover_at(p);
+        harness.step();
+        std::thread::sleep(std::time::Duration::from_millis(5));
+        if let Some(live) = harness.state().live_output() {
+            seen.push((live.region_mm.bounds().unwrap().width(), live.topology.components));
+        }
+    }
+    // Still drawing: the pattern has kept up with the pointer.
+    assert!(seen.len() > 10, "only {} previews while drawing", seen.len());
+    assert!(seen.iter().all(|&(_, components)| components == 1));
+    assert!(seen.last().unwrap().0 > 2.0 * seen[0].0, "the preview grows with the stroke: {seen:?}");
+    press(&harness, *wave.last().unwrap(), false);
+    harness.step();
+    settle(&mut harness);
+    let app = harness.state();
+    assert!(app.live_output().is_none(), "the preview goes once the stroke ends");
+    let id = app.doc.curves[0].id;
+    assert_eq!(app.output(id).expect("the curve's own pattern").topology.components, 1);
+}
+
+#[test]
 fn a_broken_svg_import_shows_an_error_and_changes_nothing() {
     let path = std::env::temp_dir().join(format!("tracery-broken-{}.svg", std::process::id()));
     std::fs::write(&path, "<svg xmlns='http://www.w3.org/2000/svg'><path d='M0 0 L10").unwrap();

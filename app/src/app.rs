@@ -10,6 +10,7 @@ use tracery_core::DVec2;
 use crate::command::Command;
 use crate::dialogs::{Dialogs, SystemDialogs};
 use crate::document::{Document, History, ModeSettings};
+use crate::live::{LIVE_ID, LiveJob, Session};
 use crate::modes::{CurveJob, GalleryJob, JobError, mode_ui};
 use crate::panels::{gallery, preview_3d, side_panel, status, top_bar};
 use crate::state::{Caches, Persisted};
@@ -49,6 +50,10 @@ pub struct TraceryApp {
     pub(crate) worker: Worker<CurveJob>,
     /// Alternatives of the selected curve, for the gallery.
     pub(crate) gallery: Worker<GalleryJob>,
+    /// The pattern of the stroke being drawn.
+    pub(crate) live: Worker<LiveJob>,
+    /// What the stroke being drawn shares between its jobs.
+    pub(crate) live_session: Session,
     pub(crate) gesture: Option<Gesture>,
     pub(crate) dialogs: Box<dyn Dialogs>,
     pub(crate) autosave: Autosave,
@@ -84,6 +89,8 @@ impl TraceryApp {
             caches: Caches::default(),
             worker: Worker::default(),
             gallery: Worker::default(),
+            live: Worker::live(Arc::new(|| {})),
+            live_session: Session::default(),
             gesture: None,
             dialogs,
             autosave: Autosave { path: autosave_path, saved: Document::default(), last: Instant::now() },
@@ -141,6 +148,37 @@ impl TraceryApp {
         self.worker.output(id)
     }
 
+    /// Asks for the pattern of the stroke being drawn, or forgets it.
+    fn submit_live(&mut self, now: Instant) {
+        let stroke = match &self.gesture {
+            Some(Gesture::Stroke(stroke)) if LiveJob::curve(&stroke.points).is_some() => stroke,
+            _ => {
+                self.live.retain(&[]);
+                return;
+            }
+        };
+        let ModeSettings::VectorBrush(item) = self.settings().for_new_curve();
+        let Ok(exemplar) = self.caches.exemplar(&self.doc, &item.exemplar) else { return };
+        let job = LiveJob {
+            raw: Arc::new(stroke.points.clone()),
+            exemplar,
+            settings: item.settings,
+            session: self.live_session.clone(),
+        };
+        self.live.want(LIVE_ID, job, now);
+    }
+
+    /// The pattern of the stroke being drawn, as far as it has been made.
+    pub fn live_output(&self) -> Option<&Arc<tracery_core::Product>> {
+        matches!(self.gesture, Some(Gesture::Stroke(_))).then(|| self.live.output(LIVE_ID)).flatten()
+    }
+
+    /// Starts a new stroke's live session (the last stroke's pattern is forgotten).
+    pub(crate) fn begin_live_stroke(&mut self) {
+        self.live.retain(&[]);
+        self.live_session = Session::default();
+    }
+
     /// The gallery of a curve: its alternatives, the best first.
     pub fn gallery(&self, id: u64) -> Option<&Arc<Vec<tracery_core::Product>>> {
         self.gallery.output(id).filter(|_| !self.gallery.is_stale(id))
@@ -192,7 +230,8 @@ impl TraceryApp {
             let ctx = ctx.clone();
             let wake: crate::worker::Waker = Arc::new(move || ctx.request_repaint());
             self.worker.set_waker(wake.clone());
-            self.gallery.set_waker(wake);
+            self.gallery.set_waker(wake.clone());
+            self.live.set_waker(wake);
             self.waker_set = true;
         }
         self.caches.refresh_smoothed(&self.doc.curves);
@@ -211,13 +250,15 @@ impl TraceryApp {
                 Err(e) => self.message = Some((e.to_string(), true)),
             }
         }
+        self.submit_live(now);
         let ids: Vec<u64> = self.doc.curves.iter().map(|c| c.id).collect();
         self.worker.retain(&ids);
         // Only the selected curve's gallery is worth the work.
         let wanted: Vec<u64> = self.selected.into_iter().filter(|_| self.state.show_gallery).collect();
         self.gallery.retain(&wanted);
         let gallery_busy = self.gallery.poll(now);
-        if self.worker.poll(now) || gallery_busy {
+        let live_busy = self.live.poll(now);
+        if self.worker.poll(now) || gallery_busy || live_busy {
             ctx.request_repaint_after(BUSY_REPAINT);
         }
     }

@@ -12,6 +12,7 @@ mod command_handling;
 pub mod dialogs;
 pub mod document;
 mod files;
+pub mod live;
 pub mod modes;
 pub mod panels;
 pub mod state;

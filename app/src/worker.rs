@@ -70,6 +70,12 @@ pub struct Worker<J: Job> {
     receiver: Receiver<Message<J>>,
     next_generation: u64,
     wake: Waker,
+    /// Wait after the last change before starting.
+    debounce: Duration,
+    /// Let a running job finish before starting the latest request, rather
+    /// than cancelling it: for requests that change every frame, where
+    /// cancelling would never let one finish.
+    finish_first: bool,
 }
 
 impl<J: Job> Default for Worker<J> {
@@ -82,7 +88,22 @@ impl<J: Job> Worker<J> {
     /// A worker that calls `wake` whenever progress or a result arrives.
     pub fn new(wake: Waker) -> Self {
         let (sender, receiver) = channel();
-        Worker { slots: HashMap::new(), sender, receiver, next_generation: 1, wake }
+        Worker {
+            slots: HashMap::new(),
+            sender,
+            receiver,
+            next_generation: 1,
+            wake,
+            debounce: DEBOUNCE,
+            finish_first: false,
+        }
+    }
+
+    /// A worker for requests that change every frame (a stroke being
+    /// drawn): no debounce, and a running job finishes before the latest
+    /// request starts, so results keep coming while the input moves.
+    pub fn live(wake: Waker) -> Self {
+        Worker { debounce: Duration::ZERO, finish_first: true, ..Worker::new(wake) }
     }
 
     /// Replaces the wake-up callback (the app sets it once it has a context).
@@ -137,7 +158,8 @@ impl<J: Job> Worker<J> {
         let mut busy = false;
         for (&id, slot) in &mut self.slots {
             if let Some((_, since)) = &slot.pending {
-                if now.duration_since(*since) >= DEBOUNCE {
+                let running = matches!(slot.state, JobState::Running { .. });
+                if now.duration_since(*since) >= self.debounce && !(self.finish_first && running) {
                     let Some((request, _)) = slot.pending.take() else { continue };
                     slot.cancel.store(true, Ordering::Relaxed);
                     slot.cancel = Arc::new(AtomicBool::new(false));

@@ -87,7 +87,10 @@ fn handle_gestures(app: &mut TraceryApp, ui: &egui::Ui, response: &egui::Respons
     {
         let tolerance_mm = PICK_RADIUS_POINTS / f64::from(view.points_per_mm);
         app.gesture = match app.state.tool {
-            Tool::Draw => Some(Gesture::Stroke(draw::Stroke::begin(p))),
+            Tool::Draw => {
+                app.begin_live_stroke();
+                Some(Gesture::Stroke(draw::Stroke::begin(p)))
+            }
             Tool::Pan => Some(Gesture::Pan(pan::Pan)),
             // The ring tool acts on clicks only.
             Tool::Ring => None,
@@ -157,6 +160,9 @@ fn paint_document(app: &TraceryApp, ui: &egui::Ui, painter: &egui::Painter, rect
         }
     }
     if let Some(Gesture::Stroke(stroke)) = &app.gesture {
+        if let Some(product) = app.live_output() {
+            painter.add(fill(&view, rect, &product.fill_mm, ink.gamma_multiply(0.8)));
+        }
         painter.add(polyline(&view, rect, &stroke.points, false, Stroke::new(2.0, SELECTION)));
     }
     painter.text(

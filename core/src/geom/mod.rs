@@ -3,6 +3,7 @@
 //! topology count, polyline refinement and SVG path flattening.
 
 mod boolean;
+mod fill;
 pub mod flatten;
 mod offset;
 mod polygon;
@@ -13,6 +14,7 @@ mod sanity;
 mod topology;
 
 pub use boolean::{FillRule, clip_to_rect, difference, resolve_contours, union};
+pub use fill::fill_triangles;
 pub use offset::{OFFSET_ARC_TOLERANCE_MM, offset};
 pub use polygon::{Polygon, Region, ring_contains, ring_perimeter, signed_area};
 pub use polyline::refine_mapped;

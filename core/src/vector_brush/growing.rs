@@ -18,7 +18,8 @@ const RELAID_PIECES: usize = 2;
 /// already laid are kept but for the last few, and the search only extends
 /// them: its work grows with what was added, not with the whole stroke.
 /// Where the kept pieces cannot be extended to meet the targets, the search
-/// starts again from nothing.
+/// starts again from nothing. Its products are previews: triangles to draw,
+/// no solid (the finished stroke is made as any curve is).
 ///
 /// ```
 /// use tracery_core::control::Control;
@@ -82,7 +83,8 @@ impl Growing {
         let pieces = &synthesis.solution.pieces;
         self.kept = prefix.iter().zip(pieces).take_while(|(a, b)| a == b).count();
         self.laid = pieces.clone();
-        to_product(synthesis, &Along::Curve(curve.clone()), &self.settings)
+        // A preview: drawn, not printed, so no solid.
+        to_product(synthesis, &Along::Curve(curve.clone()), &self.settings, false)
     }
 
     /// How many pieces the last [`Growing::grow`] kept from the one before.

@@ -8,6 +8,7 @@ use super::{
 use crate::Product;
 use crate::control::Control;
 use crate::curve::Along;
+use crate::geom::fill_triangles;
 use crate::mesh::extrude;
 use crate::product::{Fact, Facts, Overlays};
 
@@ -45,7 +46,7 @@ pub fn make_product(
             synthesize_rectangle(exemplar, *width_mm, *height_mm, settings, control)?
         }
     };
-    to_product(synthesis, along, settings)
+    to_product(synthesis, along, settings, true)
 }
 
 /// The first `count` alternatives along `along` as products (see
@@ -71,7 +72,7 @@ pub fn make_alternatives(
     match along {
         Along::Curve(curve) => synthesize_alternatives(exemplar, curve, settings, count, control)?
             .into_iter()
-            .map(|s| to_product(s, along, settings))
+            .map(|s| to_product(s, along, settings, true))
             .collect(),
         Along::Rectangle { .. } => (0..count)
             .map(|k| {
@@ -83,8 +84,15 @@ pub fn make_alternatives(
     }
 }
 
-/// A synthesis as a product: its solid, overlays and the figures a report shows.
-pub(crate) fn to_product(synthesis: Synthesis, along: &Along, settings: &Settings) -> Result<Product, SynthesisError> {
+/// A synthesis as a product: its solid (unless `solid` is false, for a
+/// preview: then only triangles to draw it), overlays and the figures a
+/// report shows.
+pub(crate) fn to_product(
+    synthesis: Synthesis,
+    along: &Along,
+    settings: &Settings,
+    solid: bool,
+) -> Result<Product, SynthesisError> {
     let Synthesis {
         scale_mm_per_unit,
         piece_count,
@@ -98,7 +106,14 @@ pub(crate) fn to_product(synthesis: Synthesis, along: &Along, settings: &Setting
         shape_classes,
         ..
     } = synthesis;
-    let mesh = timings.time("mesh", || extrude(&planar.region, settings.thickness_mm))?;
+    let mesh = match solid {
+        true => Some(timings.time("mesh", || extrude(&planar.region, settings.thickness_mm))?),
+        false => None,
+    };
+    let fill_mm = match &mesh {
+        Some(mesh) => mesh.top_faces(),
+        None => timings.time("fill", || fill_triangles(&planar.region)),
+    };
     let mut overlays = Overlays::default();
     let mut path_ends_mm = Vec::new();
     let length_mm = match along {
@@ -138,11 +153,11 @@ pub(crate) fn to_product(synthesis: Synthesis, along: &Along, settings: &Setting
     facts.push("pieces_in_exemplar", Fact::Count(piece_count));
     facts.push("dp_states", Fact::Count(solution.states));
     Ok(Product {
-        fill_mm: mesh.top_faces(),
+        fill_mm,
         region_mm: planar.region,
         paths_mm: Vec::new(),
         path_ends_mm,
-        mesh_mm: Some(mesh),
+        mesh_mm: mesh,
         image: None,
         overlays,
         topology,

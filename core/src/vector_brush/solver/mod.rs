@@ -241,7 +241,10 @@ pub fn solve(set: &PieceSet, options: &SolveOptions, control: &Control) -> Resul
         }
         _ => options,
     };
-    let mut found = search_all(search_set, options, control)?;
+    let mut found = match search_all(search_set, options, control) {
+        Err(SolveError::TooManyStates { .. }) if !options.prefix.is_empty() => None,
+        other => other?,
+    };
     if found.is_none() && !options.prefix.is_empty() {
         found = search_all(search_set, &SolveOptions { prefix: Vec::new(), ..options.clone() }, control)?;
     }

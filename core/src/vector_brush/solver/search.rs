@@ -531,7 +531,10 @@ pub(super) fn search_all(
         work_total,
         control,
     };
-    for &tolerance in &tolerances {
+    // A fixed beginning is worth keeping only if it fits at the usual
+    // tolerance: wider searches from it would cost more than starting again.
+    let levels = if options.prefix.is_empty() { tolerances.len() } else { 1 };
+    for &tolerance in &tolerances[..levels] {
         let window = window_of(tolerance);
         problem.work_total = problem.work_total.max(runs_per_level * (grid.key(window.1) as usize + 1));
         let found = match options.curve {
