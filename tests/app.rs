@@ -202,6 +202,19 @@ fn the_ring_tool_hangs_a_pendant_from_a_jump_ring_where_clicked() {
     assert_eq!((product.topology.components, product.topology.jump_rings), (1, 1));
     assert_eq!(product.mesh_mm.as_ref().unwrap().shell_count(), 1);
     harness.get_by_label_contains("+ 1 jump ring");
+    // Drawing another curve leaves the pendant's ring alone.
+    harness.get_by_label("Draw").click();
+    harness.step();
+    let wave: Vec<Pos2> = (0..=30).map(|k| Pos2::new(420.0 + k as f32 * 15.0, 560.0)).collect();
+    drag(&mut harness, &wave);
+    settle(&mut harness);
+    let app = harness.state();
+    assert_eq!(app.doc.curves.len(), 2);
+    assert_eq!(app.doc.curves[0].jump_rings.at.len(), 1);
+    assert_eq!(app.output(app.doc.curves[0].id).unwrap().topology.jump_rings, 1, "the pendant keeps its ring");
+    assert!(app.doc.curves[1].jump_rings.at.is_empty());
+    harness.key_press_modifiers(Modifiers::COMMAND, Key::Z);
+    harness.step();
     // Undo takes the ring away again.
     harness.key_press_modifiers(Modifiers::COMMAND, Key::Z);
     harness.step();

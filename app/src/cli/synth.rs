@@ -50,9 +50,12 @@ pub struct SynthArgs {
     /// Thickness of the printed pattern, mm [default: 2].
     #[arg(long)]
     pub thickness: Option<f64>,
-    /// Seed for another pattern (0: the best one) [default: 0].
+    /// Seed that perturbs the pattern at random (0: none) [default: 0].
     #[arg(long)]
     pub seed: Option<u64>,
+    /// Which solution: 0 is the best, 1 to 5 each differ from all before them (the app's gallery) [default: 0].
+    #[arg(long)]
+    pub alternative: Option<u32>,
 }
 
 impl SynthArgs {
@@ -69,6 +72,7 @@ impl SynthArgs {
         s.scale = self.scale.unwrap_or(s.scale);
         s.thickness_mm = self.thickness.unwrap_or(s.thickness_mm);
         s.seed = self.seed.unwrap_or(s.seed);
+        s.alternative = self.alternative.unwrap_or(s.alternative);
         s
     }
 }

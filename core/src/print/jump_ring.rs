@@ -147,12 +147,14 @@ fn nearest_outline_point(region: &Region, p: DVec2) -> Option<DVec2> {
 /// again. The rings' holes are counted apart from the pattern's own.
 ///
 /// ```
-/// use tracery_core::control::Control;
-/// use tracery_core::curve::Along;
+/// use tracery_core::geom::{Polygon, Region};
 /// use tracery_core::print::{JumpRings, RingAt, add_jump_rings};
-/// use tracery_core::vector_brush::{Settings, builtin, make_product};
-/// let along = Along::parse("circle:12").unwrap();
-/// let pendant = make_product(&builtin("chain").unwrap(), &along, &Settings::default(), &Control::default()).unwrap();
+/// use tracery_core::{DVec2, Product, mesh::extrude};
+/// // A 20 × 10 mm plate, 2 mm thick.
+/// let plate = vec![DVec2::new(0.0, 0.0), DVec2::new(20.0, 0.0), DVec2::new(20.0, 10.0), DVec2::new(0.0, 10.0)];
+/// let region = Region::new(vec![Polygon { outer: plate, holes: vec![] }]);
+/// let mut pendant = Product { mesh_mm: Some(extrude(&region, 2.0).unwrap()), region_mm: region, ..Product::default() };
+/// pendant.topology.components = 1;
 /// let with_ring = add_jump_rings(pendant.clone(), &JumpRings::at(vec![RingAt::Top])).unwrap();
 /// assert_eq!(with_ring.topology.components, pendant.topology.components);
 /// assert_eq!(with_ring.topology.jump_rings, 1);

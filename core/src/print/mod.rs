@@ -32,14 +32,17 @@ use crate::report::Warning;
 /// without planar geometry are returned as they are.
 ///
 /// ```
-/// use tracery_core::control::Control;
-/// use tracery_core::curve::Along;
+/// use tracery_core::geom::{Polygon, Region};
 /// use tracery_core::print::{PrintSettings, finish};
-/// use tracery_core::vector_brush::{Settings, builtin, make_product};
-/// let along = Along::parse("line:60").unwrap();
-/// let product = make_product(&builtin("vine").unwrap(), &along, &Settings::default(), &Control::default()).unwrap();
-/// let checked = finish(product, &PrintSettings::default());
-/// assert!(checked.printability.is_some());
+/// use tracery_core::{DVec2, Product, mesh::extrude};
+/// // A 10 mm bar 0.2 mm wide: thinner than a 0.4 mm nozzle.
+/// let bar = vec![DVec2::new(0.0, 0.0), DVec2::new(10.0, 0.0), DVec2::new(10.0, 0.2), DVec2::new(0.0, 0.2)];
+/// let region = Region::new(vec![Polygon { outer: bar, holes: vec![] }]);
+/// let product = Product { mesh_mm: Some(extrude(&region, 2.0).unwrap()), region_mm: region, ..Product::default() };
+/// let checked = finish(product.clone(), &PrintSettings::default());
+/// assert!((checked.printability.unwrap().thinnest_feature_mm.unwrap() - 0.2).abs() < 1e-9);
+/// let thick = finish(product, &PrintSettings::default().with_thicken(true));
+/// assert!(thick.printability.unwrap().thin_features.is_empty());
 /// ```
 pub fn finish(mut product: Product, settings: &PrintSettings) -> Product {
     let Some(mesh) = &product.mesh_mm else { return product };
