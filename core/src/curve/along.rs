@@ -6,8 +6,12 @@ use std::path::{Path, PathBuf};
 
 use super::{Curve, CurveError, first_path_points};
 
-/// Distance under which an SVG path's last point closes it onto its first, user units.
+/// Distance under which an SVG path's last point closes it onto its first, mm.
 pub const SVG_CLOSE_TOLERANCE: f64 = 1e-6;
+
+/// Spacing of the samples of a curve taken from an SVG path, mm: as fine as
+/// a drawn stroke's.
+pub const SVG_SPACING_MM: f64 = 0.5;
 
 /// Where a pattern goes.
 #[derive(Clone, Debug, PartialEq)]
@@ -112,7 +116,10 @@ impl Along {
     }
 
     /// The first path of an SVG file, flattened, as a curve in millimetres
-    /// (one user unit is one millimetre).
+    /// (the file's own size where it gives one in mm, cm, in, pt or pc; one
+    /// user unit a millimetre otherwise), resampled every
+    /// [`SVG_SPACING_MM`] so that a path of a few long segments gets
+    /// tangents along them, not only at its corners.
     pub fn curve_from_svg(path: &Path) -> Result<Curve, AlongError> {
         let data =
             std::fs::read(path).map_err(|e| AlongError::Io { path: path.to_path_buf(), message: e.to_string() })?;
@@ -121,7 +128,8 @@ impl Along {
             first_path_points(&data).map_err(|source| AlongError::Curve { context: context.clone(), source })?;
         let closed = points.len() > 2
             && points.first().zip(points.last()).is_some_and(|(a, b)| a.distance(*b) < SVG_CLOSE_TOLERANCE);
-        Curve::from_polyline(&points, closed).map_err(|source| AlongError::Curve { context, source })
+        let curve = Curve::from_polyline(&points, closed).map_err(|source| AlongError::Curve { context, source })?;
+        Ok(curve.resampled(SVG_SPACING_MM))
     }
 
     /// The length the pattern runs along, mm (a rectangle's width).

@@ -9,7 +9,7 @@ mod parametric;
 mod planar_topology;
 mod svg_path;
 
-pub use along::{Along, AlongError};
+pub use along::{Along, AlongError, SVG_SPACING_MM};
 pub use band_to_plane::{MAPPING_TOLERANCE_MM, PlanarPattern, map_along};
 pub use parametric::{CORNER_ANGLE_DEG, Curve, CurveError};
 pub use planar_topology::planar_topology;
