@@ -106,6 +106,17 @@ pub fn max_distance_from(region: &Region, curve: &Curve) -> f64 {
 /// ```
 pub fn seam_kinks_deg(region: &Region, seams_u: &[f64], tolerance: f64) -> Vec<f64> {
     let mut kinks = Vec::new();
+    let mut sorted = seams_u.to_vec();
+    sorted.sort_by(f64::total_cmp);
+    // The seam nearest to `x`, if within the tolerance.
+    let seam_at = |x: f64| {
+        let k = sorted.partition_point(|&s| s < x);
+        [k.checked_sub(1), Some(k)]
+            .into_iter()
+            .flatten()
+            .filter_map(|k| sorted.get(k).copied())
+            .find(|s| (x - s).abs() <= tolerance)
+    };
     let turn = |a: DVec2, b: DVec2, c: DVec2| {
         let (d1, d2) = (b - a, c - b);
         d1.perp_dot(d2).atan2(d1.dot(d2))
@@ -118,7 +129,7 @@ pub fn seam_kinks_deg(region: &Region, seams_u: &[f64], tolerance: f64) -> Vec<f
         for i in 0..n {
             let at = |k: isize| ring[(i as isize + k).rem_euclid(n as isize) as usize];
             let (p, prev, next) = (at(0), at(-1), at(1));
-            let Some(&s) = seams_u.iter().find(|&&s| (p.x - s).abs() <= tolerance) else { continue };
+            let Some(s) = seam_at(p.x) else { continue };
             if (prev.x - s) * (next.x - s) >= 0.0 {
                 continue;
             }

@@ -11,6 +11,7 @@ use crate::curve::Along;
 use crate::geom::fill_triangles;
 use crate::mesh::extrude;
 use crate::product::{Fact, Facts, Overlays};
+use crate::quality::seam_kinks_deg;
 
 /// Samples per millimetre of the band's edges drawn on the canvas.
 const BAND_EDGE_SAMPLES_PER_MM: f64 = 1.0;
@@ -152,6 +153,10 @@ pub(crate) fn to_product(
     facts.push("alternative", Fact::Count(settings.alternative as usize));
     facts.push("pieces_in_exemplar", Fact::Count(piece_count));
     facts.push("dp_states", Fact::Count(solution.states));
+    // Measured on the stitched pattern, before it is bent along the curve:
+    // how much the outline turns at a seam beyond its turn around it.
+    let kinks = timings.time("seam check", || seam_kinks_deg(&band.region, &band.seams, 1e-6 * band.length));
+    facts.push("seam_kink_max_deg", Fact::Number(kinks.into_iter().fold(0.0, f64::max)));
     Ok(Product {
         fill_mm,
         region_mm: planar.region,
