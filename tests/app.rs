@@ -238,8 +238,8 @@ fn the_gallery_offers_distinct_solutions_and_another_one_steps_through_them() {
         harness.step();
     }
     let id = harness.state().doc.curves[0].id;
-    let all = harness.state().gallery(id).expect("a gallery").clone();
-    let shown = tracery::panels::gallery::distinct(&all, false);
+    let solutions = harness.state().gallery(id).expect("a gallery").clone();
+    let (all, shown) = (&solutions.products, &solutions.shown);
     assert!(shown.len() >= 4, "only {} distinct solutions", shown.len());
     let best = harness.state().output(id).unwrap().clone();
     // Click the third thumbnail shown.

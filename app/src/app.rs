@@ -13,6 +13,7 @@ use crate::document::{Document, History, ModeSettings};
 use crate::live::{LIVE_ID, LiveJob, Session};
 use crate::modes::{CurveJob, GalleryJob, JobError, mode_ui};
 use crate::panels::{gallery, preview_3d, side_panel, status, top_bar};
+use crate::solutions::Solutions;
 use crate::state::{Caches, Persisted};
 use crate::tools::Gesture;
 use crate::worker::{JobState, Worker};
@@ -180,12 +181,12 @@ impl TraceryApp {
     }
 
     /// The gallery of a curve: its alternatives, the best first.
-    pub fn gallery(&self, id: u64) -> Option<&Arc<Vec<tracery_core::Product>>> {
+    pub fn gallery(&self, id: u64) -> Option<&Arc<Solutions>> {
         self.gallery.output(id).filter(|_| !self.gallery.is_stale(id))
     }
 
     /// Where the gallery of a curve stands.
-    pub fn gallery_state(&self, id: u64) -> Option<&JobState<Vec<tracery_core::Product>, JobError>> {
+    pub fn gallery_state(&self, id: u64) -> Option<&JobState<Solutions, JobError>> {
         self.gallery.state(id)
     }
 
@@ -195,12 +196,10 @@ impl TraceryApp {
     pub fn next_alternative(&mut self) {
         use tracery_core::vector_brush::ALTERNATIVES;
         let current = self.settings().alternative();
-        let closed = self.selected.and_then(|id| self.doc.curve(id)).is_some_and(|c| c.closed);
         let gallery = self.selected.and_then(|id| self.gallery(id).cloned());
         let mut next = (current + 1) % ALTERNATIVES;
-        if let Some(all) = gallery.filter(|all| all.len() == ALTERNATIVES as usize) {
-            let shown = gallery::distinct(&all, closed);
-            next = shown.iter().map(|&k| k as u32).find(|&k| k > current).unwrap_or(0);
+        if let Some(solutions) = gallery.filter(|s| s.products.len() == ALTERNATIVES as usize) {
+            next = solutions.shown.iter().map(|&k| k as u32).find(|&k| k > current).unwrap_or(0);
         }
         self.settings_mut().set_alternative(next);
     }
@@ -243,7 +242,7 @@ impl TraceryApp {
                     let job = CurveJob { mode, jump_rings: item.jump_rings.clone(), print: self.doc.print };
                     if self.state.show_gallery && self.selected == Some(item.id) {
                         let best = CurveJob { mode: job.mode.best(), ..job.clone() };
-                        self.gallery.want(item.id, GalleryJob(best), now);
+                        self.gallery.want(item.id, GalleryJob { job: best, closed: item.closed }, now);
                     }
                     self.worker.want(item.id, job, now);
                 }

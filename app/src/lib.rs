@@ -15,6 +15,7 @@ mod files;
 pub mod live;
 pub mod modes;
 pub mod panels;
+pub mod solutions;
 pub mod state;
 pub mod tools;
 pub mod worker;

@@ -15,6 +15,7 @@ use tracery_core::print::{JumpRingError, JumpRings, PrintSettings, add_jump_ring
 use crate::canvas::{View, polyline};
 use crate::command::Command;
 use crate::document::{Document, DocumentError, ModeSettings};
+use crate::solutions::Solutions;
 use crate::state::Caches;
 use crate::worker::Job;
 
@@ -152,16 +153,26 @@ impl ModeJob {
 /// The gallery of a curve: its mode's alternatives, each with its jump rings
 /// and checked against the printer, as the curve's own result is.
 #[derive(Clone, Debug, PartialEq)]
-pub struct GalleryJob(pub CurveJob);
+pub struct GalleryJob {
+    /// The curve's job (asking for the best result).
+    pub job: CurveJob,
+    /// Whether the curve is a loop (alternatives are compared at every rotation).
+    pub closed: bool,
+}
 
 impl Job for GalleryJob {
-    type Output = Vec<Product>;
+    type Output = Solutions;
     type Error = JobError;
 
-    fn run(&self, control: &Control) -> Result<Vec<Product>, JobError> {
-        let CurveJob { mode, jump_rings, print } = &self.0;
+    fn run(&self, control: &Control) -> Result<Solutions, JobError> {
+        let CurveJob { mode, jump_rings, print } = &self.job;
         jump_rings.validate(print)?;
-        mode.alternatives(control)?.into_iter().map(|p| Ok(finish(add_jump_rings(p, jump_rings)?, print))).collect()
+        let products = mode
+            .alternatives(control)?
+            .into_iter()
+            .map(|p| Ok(finish(add_jump_rings(p, jump_rings)?, print)))
+            .collect::<Result<Vec<Product>, JobError>>()?;
+        Ok(Solutions::new(products, self.closed))
     }
 }
 

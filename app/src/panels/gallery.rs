@@ -1,56 +1,22 @@
 //! The gallery: the selected curve's alternative patterns, computed in the
-//! background, shown as thumbnails under the canvas. Clicking one uses it.
-//!
-//! Two alternatives are told apart by [`distinctness`]: the share of the
-//! pattern's length where they show different shapes (a loop's rotated copy
-//! counts as the same). Alternatives less than [`SAME_BELOW`] apart from one
-//! shown before them are not shown again.
+//! background ([`crate::solutions`]), shown as thumbnails under the canvas.
+//! Clicking one uses it.
 
 use egui::{Color32, RichText, Sense, Stroke};
-use tracery_core::Product;
-use tracery_core::product::Fact;
-use tracery_core::quality::distinctness;
 
 use crate::TraceryApp;
 use crate::canvas::fill_fitted;
 use crate::worker::JobState;
 
-/// Alternatives differing over less than this share of their length are the same pattern.
-pub const SAME_BELOW: f64 = 0.05;
 /// Height of the gallery strip, points.
 pub const STRIP_HEIGHT: f32 = 132.0;
 /// Thumbnail size, points.
 const THUMB: egui::Vec2 = egui::vec2(120.0, 84.0);
 
-/// A product's pieces as (shape class, 1): pieces count alike.
-fn shapes(product: &Product) -> Vec<(usize, f64)> {
-    match product.facts.get("shape_sequence") {
-        Some(Fact::Indices(v)) => v.iter().map(|&c| (c, 1.0)).collect(),
-        _ => Vec::new(),
-    }
-}
-
-/// How far apart two alternatives are (0 to 1).
-pub fn apart(a: &Product, b: &Product, closed: bool) -> f64 {
-    distinctness(&shapes(a), &shapes(b), closed)
-}
-
-/// Which alternatives to show: each one that differs from all shown before it.
-pub fn distinct(all: &[Product], closed: bool) -> Vec<usize> {
-    let mut shown: Vec<usize> = Vec::new();
-    for (k, p) in all.iter().enumerate() {
-        if shown.iter().all(|&j| apart(&all[j], p, closed) >= SAME_BELOW) {
-            shown.push(k);
-        }
-    }
-    shown
-}
-
 /// The gallery strip (for the selected curve).
 pub fn gallery_ui(app: &mut TraceryApp, ui: &mut egui::Ui) {
     let Some(id) = app.selected else { return };
     let Some(item) = app.doc.curve(id) else { return };
-    let closed = item.closed;
     let current = item.mode.alternative() as usize;
     ui.horizontal(|ui| {
         ui.label(RichText::new("Solutions").strong());
@@ -64,11 +30,11 @@ pub fn gallery_ui(app: &mut TraceryApp, ui: &mut egui::Ui) {
             _ => {}
         }
     });
-    let Some(all) = app.gallery(id).cloned() else { return };
-    let shown = distinct(&all, closed);
+    let Some(solutions) = app.gallery(id).cloned() else { return };
+    let (all, shown) = (&solutions.products, &solutions.shown);
     let mut picked = None;
     ui.horizontal(|ui| {
-        for &k in &shown {
+        for &k in shown {
             let product = &all[k];
             ui.vertical(|ui| {
                 let (rect, response) = ui.allocate_exact_size(THUMB, Sense::click());
@@ -90,7 +56,7 @@ pub fn gallery_ui(app: &mut TraceryApp, ui: &mut egui::Ui) {
                 let label = if k == 0 {
                     "the best".to_string()
                 } else {
-                    format!("{:.0}% differs", 100.0 * apart(&all[0], product, closed))
+                    format!("{:.0}% differs", 100.0 * solutions.apart_from_best[k])
                 };
                 let response = response.on_hover_text(format!(
                     "Solution {}: {} component(s), {} hole(s); click to use it",
