@@ -1,6 +1,7 @@
 //! Hit testing: which curve is under the pointer.
 
 use tracery_core::DVec2;
+use tracery_core::geom::closest_on_segment;
 
 /// Distance from `p` to a polyline.
 pub fn distance_to(points: &[DVec2], closed: bool, p: DVec2) -> f64 {
@@ -10,10 +11,6 @@ pub fn distance_to(points: &[DVec2], closed: bool, p: DVec2) -> f64 {
     }
     let segments = if closed { n } else { n - 1 };
     (0..segments)
-        .map(|i| {
-            let (a, b) = (points[i], points[(i + 1) % n]);
-            let t = ((p - a).dot(b - a) / (b - a).length_squared().max(1e-12)).clamp(0.0, 1.0);
-            p.distance(a.lerp(b, t))
-        })
+        .map(|i| p.distance(closest_on_segment(p, points[i], points[(i + 1) % n]).1))
         .fold(f64::INFINITY, f64::min)
 }

@@ -3,6 +3,8 @@
 use glam::DVec2;
 use serde::{Deserialize, Serialize};
 
+use crate::geom::closest_on_segment;
+
 /// A smooth curve as a dense polyline, parameterized by arc length.
 ///
 /// `u` runs along the curve from 0 to [`Curve::length`]; the band's `v`
@@ -350,14 +352,7 @@ impl Curve {
 
     /// Distance from `p` to the curve.
     pub fn distance(&self, p: DVec2) -> f64 {
-        self.points
-            .windows(2)
-            .map(|s| {
-                let (a, b) = (s[0], s[1]);
-                let t = ((p - a).dot(b - a) / (b - a).length_squared().max(1e-300)).clamp(0.0, 1.0);
-                p.distance(a.lerp(b, t))
-            })
-            .fold(f64::INFINITY, f64::min)
+        self.points.windows(2).map(|s| p.distance(closest_on_segment(p, s[0], s[1]).1)).fold(f64::INFINITY, f64::min)
     }
 }
 

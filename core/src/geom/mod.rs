@@ -3,6 +3,7 @@
 //! topology count, polyline refinement and SVG path flattening.
 
 mod boolean;
+mod disc;
 mod fill;
 pub mod flatten;
 mod offset;
@@ -11,9 +12,11 @@ mod polyline;
 mod rect;
 mod resolution;
 mod sanity;
+mod segment;
 mod topology;
 
 pub use boolean::{FillRule, clip_to_rect, difference, resolve_contours, union};
+pub use disc::{arc_step, disc};
 pub use fill::fill_triangles;
 pub use offset::{OFFSET_ARC_TOLERANCE_MM, offset};
 pub use polygon::{Polygon, Region, ring_contains, ring_perimeter, signed_area};
@@ -21,4 +24,5 @@ pub use polyline::refine_mapped;
 pub use rect::Rect;
 pub use resolution::{mean_width, without_slivers};
 pub use sanity::{MIN_RING_AREA, RegionDefect};
+pub use segment::closest_on_segment;
 pub use topology::{PatternTopology, Topology, count_topology};

@@ -4,8 +4,8 @@
 use i_overlay::mesh::float::outline::offset::OutlineOffset;
 use i_overlay::mesh::float::style::{LineJoin, OutlineStyle};
 
-use super::Region;
 use super::boolean::{Contour, from_shapes};
+use super::{Region, arc_step};
 
 /// Largest distance between a round join's arc and its chords, mm. Far
 /// below what a nozzle or a laser resolves.
@@ -33,8 +33,8 @@ pub fn offset(region: &Region, distance_mm: f64) -> Region {
     }
     let radius = distance_mm.abs();
     // The arc step (chord length over radius) that keeps the chord error
-    // under the tolerance: 2·acos(1 − tolerance / radius).
-    let step = 2.0 * (1.0 - (OFFSET_ARC_TOLERANCE_MM / radius).min(1.0)).acos();
+    // under the tolerance.
+    let step = arc_step(radius, OFFSET_ARC_TOLERANCE_MM);
     let style = OutlineStyle::new(distance_mm).line_join(LineJoin::Round(step.max(0.05)));
     let shapes: Vec<Vec<Contour>> =
         region.polygons.iter().map(|p| p.rings().map(|r| r.iter().map(|q| [q.x, q.y]).collect()).collect()).collect();

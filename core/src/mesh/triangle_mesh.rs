@@ -42,12 +42,18 @@ impl Mesh {
     /// The triangles facing up at the top (`z` = the highest `z`), projected
     /// onto the plane: the region's fill, for drawing it.
     pub fn top_faces(&self) -> Vec<[glam::DVec2; 3]> {
-        let top = self.vertices.iter().map(|v| v[2]).fold(f64::NEG_INFINITY, f64::max);
+        let top = self.top_z();
         self.triangles
             .iter()
             .filter(|t| t.iter().all(|&i| self.vertices[i as usize][2] == top))
             .map(|t| t.map(|i| glam::DVec2::new(self.vertices[i as usize][0], self.vertices[i as usize][1])))
             .collect()
+    }
+
+    /// The highest `z` of any vertex (negative infinity when there is none):
+    /// an extruded pattern's thickness.
+    pub fn top_z(&self) -> f64 {
+        self.vertices.iter().map(|v| v[2]).fold(f64::NEG_INFINITY, f64::max)
     }
 
     /// Appends `other`'s vertices and triangles (the meshes stay separate shells).

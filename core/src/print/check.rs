@@ -7,8 +7,9 @@ use glam::DVec2;
 use serde::Serialize;
 
 use super::PrintSettings;
+use super::edge_grid::EdgeGrid;
 use super::thickness::{Narrow, Side, narrow_places};
-use crate::geom::Region;
+use crate::geom::{Region, closest_on_segment};
 
 /// A group of narrow places is a flaw when, somewhere in it, the two sides
 /// are at least this many minimum widths apart along the outline: a neck
@@ -92,7 +93,7 @@ pub fn check(region: &Region, seams_mm: &[[DVec2; 2]], settings: &PrintSettings,
     let thin_features = group(narrow_places(region, Side::Material, width, spacing), width);
     let narrow_gaps = group(narrow_places(region, Side::Gap, width, spacing), width);
     let seam_length = seams_mm.iter().map(|[a, b]| a.distance(*b)).fold(0.0, f64::max);
-    let edges = EdgeBuckets::new(region, (seam_length / 8.0).max(width));
+    let edges = EdgeGrid::new(region, (seam_length / 8.0).max(width));
     let mut weak_bridges: Vec<Bridge> = seams_mm
         .iter()
         .flat_map(|s| bridges_on(region, &edges, *s))
@@ -167,67 +168,18 @@ fn group(places: Vec<Narrow>, width: f64) -> Vec<Flaw> {
     flaws
 }
 
-/// The outline's edges bucketed in a grid, for crossing seams quickly.
-struct EdgeBuckets<'a> {
-    rings: Vec<&'a [DVec2]>,
-    cell_mm: f64,
-    cells: FxHashMap<(i64, i64), Vec<(u32, u32)>>,
-}
-
-impl<'a> EdgeBuckets<'a> {
-    fn new(region: &'a Region, cell_mm: f64) -> Self {
-        let rings: Vec<&[DVec2]> = region.rings().map(|r| r.as_slice()).collect();
-        let mut cells: FxHashMap<(i64, i64), Vec<(u32, u32)>> = FxHashMap::default();
-        for (r, ring) in rings.iter().enumerate() {
-            for k in 0..ring.len() {
-                let (p, q) = (ring[k], ring[(k + 1) % ring.len()]);
-                let (lo, hi) = (cell_of(p.min(q), cell_mm), cell_of(p.max(q), cell_mm));
-                for x in lo.0..=hi.0 {
-                    for y in lo.1..=hi.1 {
-                        cells.entry((x, y)).or_default().push((r as u32, k as u32));
-                    }
-                }
-            }
-        }
-        EdgeBuckets { rings, cell_mm, cells }
-    }
-
-    /// Edges whose cells overlap the box around `a`–`b`, each once.
-    fn near(&self, a: DVec2, b: DVec2) -> Vec<(u32, u32)> {
-        let (lo, hi) = (cell_of(a.min(b), self.cell_mm), cell_of(a.max(b), self.cell_mm));
-        let mut out: Vec<(u32, u32)> = Vec::new();
-        for x in lo.0..=hi.0 {
-            for y in lo.1..=hi.1 {
-                out.extend(self.cells.get(&(x, y)).into_iter().flatten());
-            }
-        }
-        out.sort_unstable();
-        out.dedup();
-        out
-    }
-}
-
-fn cell_of(p: DVec2, cell: f64) -> (i64, i64) {
-    ((p.x / cell).floor() as i64, (p.y / cell).floor() as i64)
-}
-
 /// The stretches of material along one seam: the seam is split where it
 /// crosses the outline, and each piece is material when its middle lies
 /// left of the nearest outline edge (material lies left of every ring),
 /// with the usual rule at a vertex: left of both edges at a convex corner,
 /// of either at a reflex one.
-fn bridges_on(region: &Region, edges: &EdgeBuckets<'_>, [a, b]: [DVec2; 2]) -> Vec<Bridge> {
+fn bridges_on(region: &Region, edges: &EdgeGrid<'_>, [a, b]: [DVec2; 2]) -> Vec<Bridge> {
     let ab = b - a;
     let near = edges.near(a, b);
-    let edge = |(r, k): (u32, u32)| {
-        let ring = edges.rings[r as usize];
-        let n = ring.len();
-        (ring[(k as usize + n - 1) % n], ring[k as usize], ring[(k as usize + 1) % n], ring[(k as usize + 2) % n])
-    };
     let mut ts = vec![0.0, 1.0];
     let along = |x: DVec2| (x - a).dot(ab) / ab.length_squared();
     for &e in &near {
-        let (_, p, q, _) = edge(e);
+        let (p, q) = (edges.edges[e].a, edges.edges[e].b);
         // Which side of the seam's line each end lies on, with zero counted
         // as one side: an edge ending on the line, or of no length, then
         // crosses once or not at all, never twice.
@@ -243,19 +195,16 @@ fn bridges_on(region: &Region, edges: &EdgeBuckets<'_>, [a, b]: [DVec2; 2]) -> V
     ts.sort_by(f64::total_cmp);
     ts.dedup();
     let is_material = |m: DVec2| -> bool {
-        let mut best: Option<(f64, (u32, u32), f64)> = None;
+        let mut best: Option<(f64, usize, f64)> = None;
         for &e in &near {
-            let (_, p, q, _) = edge(e);
-            let pq = q - p;
-            let u =
-                if pq.length_squared() > 0.0 { ((m - p).dot(pq) / pq.length_squared()).clamp(0.0, 1.0) } else { 0.0 };
-            let d = m.distance_squared(p + pq * u);
+            let (u, closest) = closest_on_segment(m, edges.edges[e].a, edges.edges[e].b);
+            let d = m.distance_squared(closest);
             if best.is_none_or(|(bd, _, _)| d < bd) {
                 best = Some((d, e, u));
             }
         }
-        let Some((_, e, u)) = best.filter(|(d, _, _)| d.sqrt() < edges.cell_mm) else { return region.contains(m) };
-        let (o, p, q, r) = edge(e);
+        let Some((_, e, u)) = best.filter(|(d, _, _)| d.sqrt() < edges.cell_mm()) else { return region.contains(m) };
+        let (o, p, q, r) = edges.with_neighbours(e);
         let left = |x: DVec2, y: DVec2| (y - x).perp_dot(m - x) > 0.0;
         // At a vertex, the corner decides with both of its edges.
         let corner = |before: DVec2, at: DVec2, after: DVec2| {

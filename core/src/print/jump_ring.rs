@@ -6,7 +6,10 @@ use serde::{Deserialize, Serialize};
 
 use super::PrintSettings;
 use crate::Product;
-use crate::geom::{OFFSET_ARC_TOLERANCE_MM, Polygon, Region, count_topology, difference, ring_contains, union};
+use crate::geom::{
+    OFFSET_ARC_TOLERANCE_MM, Polygon, Region, arc_step, closest_on_segment, count_topology, difference, disc,
+    ring_contains, union,
+};
 use crate::mesh::extrude;
 use crate::report::Warning;
 
@@ -111,15 +114,9 @@ impl JumpRings {
 }
 
 /// A disc as a polygon whose chords stay within the offset tolerance.
-fn disc(centre: DVec2, radius: f64) -> Polygon {
-    let step = 2.0 * (1.0 - (OFFSET_ARC_TOLERANCE_MM / radius).min(1.0)).acos();
-    let sides = ((std::f64::consts::TAU / step.max(1e-3)).ceil() as usize).clamp(16, 256);
-    Polygon {
-        outer: (0..sides)
-            .map(|k| centre + DVec2::from_angle(k as f64 / sides as f64 * std::f64::consts::TAU) * radius)
-            .collect(),
-        holes: Vec::new(),
-    }
+fn fine_disc(centre: DVec2, radius: f64) -> Polygon {
+    let step = arc_step(radius, OFFSET_ARC_TOLERANCE_MM);
+    disc(centre, radius, ((std::f64::consts::TAU / step.max(1e-3)).ceil() as usize).clamp(16, 256))
 }
 
 /// The point of `region`'s outline nearest to `p`.
@@ -127,11 +124,7 @@ fn nearest_outline_point(region: &Region, p: DVec2) -> Option<DVec2> {
     let mut best: Option<(f64, DVec2)> = None;
     for ring in region.rings() {
         for k in 0..ring.len() {
-            let (a, b) = (ring[k], ring[(k + 1) % ring.len()]);
-            let ab = b - a;
-            let t =
-                if ab.length_squared() > 0.0 { ((p - a).dot(ab) / ab.length_squared()).clamp(0.0, 1.0) } else { 0.0 };
-            let q = a + ab * t;
+            let (_, q) = closest_on_segment(p, ring[k], ring[(k + 1) % ring.len()]);
             let d = q.distance_squared(p);
             if best.is_none_or(|(bd, _)| d < bd) {
                 best = Some((d, q));
@@ -168,7 +161,7 @@ pub fn add_jump_rings(mut product: Product, rings: &JumpRings) -> Result<Product
     if product.region_mm.is_empty() {
         return Err(JumpRingError::NoPattern);
     }
-    let thickness_mm = mesh.vertices.iter().map(|v| v[2]).fold(0.0, f64::max);
+    let thickness_mm = mesh.top_z().max(0.0);
     let inner = 0.5 * rings.hole_mm;
     let outer = inner + rings.wall_mm;
     // Ring centres sit so that the ring's wall overlaps what it hangs from by half.
@@ -196,8 +189,8 @@ pub fn add_jump_rings(mut product: Product, rings: &JumpRings) -> Result<Product
     let mut added: Vec<Polygon> = Vec::new();
     let mut holes: Vec<Polygon> = Vec::new();
     for &centre in &centres {
-        added.push(disc(centre, outer));
-        holes.push(disc(centre, inner));
+        added.push(fine_disc(centre, outer));
+        holes.push(fine_disc(centre, inner));
         if !product.region_mm.contains(centre)
             && let Some(m) = nearest_outline_point(&product.region_mm, centre)
             && m.distance(centre) > outer - 0.5 * rings.wall_mm

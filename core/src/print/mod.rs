@@ -11,6 +11,7 @@
 //!   counted again after thickening.
 
 mod check;
+mod edge_grid;
 mod jump_ring;
 mod settings;
 mod thicken;
@@ -49,7 +50,7 @@ pub fn finish(mut product: Product, settings: &PrintSettings) -> Product {
     if product.region_mm.is_empty() {
         return product;
     }
-    let thickness_mm = mesh.vertices.iter().map(|v| v[2]).fold(0.0, f64::max);
+    let thickness_mm = mesh.top_z().max(0.0);
     let seams = product.overlays.seams_mm.clone();
     let mut found = product.timings.time("print check", || check(&product.region_mm, &seams, settings, thickness_mm));
     if settings.thicken && !found.thin_features.is_empty() {
@@ -57,11 +58,12 @@ pub fn finish(mut product: Product, settings: &PrintSettings) -> Product {
         // Discs joined to other material can leave a new, shorter neck
         // beside them: a few passes settle it.
         let mut thick = product.region_mm.clone();
-        let mut thin = found.thin_features.clone();
+        let mut checked = found.clone();
         for _ in 0..THICKEN_PASSES {
-            thick = product.timings.time("thicken", || thicken(&thick, &thin, settings.min_width_mm()));
-            thin = product.timings.time("print check", || check(&thick, &[], settings, thickness_mm)).thin_features;
-            if thin.is_empty() {
+            thick =
+                product.timings.time("thicken", || thicken(&thick, &checked.thin_features, settings.min_width_mm()));
+            checked = product.timings.time("print check", || check(&thick, &seams, settings, thickness_mm));
+            if checked.thin_features.is_empty() {
                 break;
             }
         }
@@ -80,8 +82,8 @@ pub fn finish(mut product: Product, settings: &PrintSettings) -> Product {
                 product.fill_mm = mesh.top_faces();
                 product.mesh_mm = Some(mesh);
                 product.region_mm = thick;
-                found =
-                    product.timings.time("print check", || check(&product.region_mm, &seams, settings, thickness_mm));
+                // The last pass checked the region as it now is.
+                found = checked;
                 found.thickened = true;
             }
             Err(e) => product.warnings.push(Warning::ThickeningFailed { reason: e.to_string() }),

@@ -1,9 +1,7 @@
 //! Thickening thin features to the nozzle's width.
 
-use glam::DVec2;
-
 use super::Flaw;
-use crate::geom::{Polygon, Region, union};
+use crate::geom::{Polygon, Region, disc, union};
 
 /// Sides of the discs added: the chord error is under 1% of the radius.
 const DISC_SIDES: usize = 24;
@@ -28,16 +26,8 @@ const DISC_MARGIN: f64 = 1.02;
 /// ```
 pub fn thicken(region: &Region, thin: &[Flaw], min_width_mm: f64) -> Region {
     let radius = 0.5 * min_width_mm * DISC_MARGIN;
-    let discs: Vec<Polygon> = thin
-        .iter()
-        .flat_map(|f| f.discs_mm.iter())
-        .map(|&(centre, _)| Polygon {
-            outer: (0..DISC_SIDES)
-                .map(|k| centre + DVec2::from_angle(k as f64 / DISC_SIDES as f64 * std::f64::consts::TAU) * radius)
-                .collect(),
-            holes: Vec::new(),
-        })
-        .collect();
+    let discs: Vec<Polygon> =
+        thin.iter().flat_map(|f| f.discs_mm.iter()).map(|&(centre, _)| disc(centre, radius, DISC_SIDES)).collect();
     if discs.is_empty() {
         return region.clone();
     }

@@ -3,11 +3,10 @@
 //! that touches the outline there and stays inside the material (or inside
 //! the empty space) has the local width as its diameter.
 
-use std::collections::HashMap;
-
 use glam::DVec2;
 use rayon::prelude::*;
 
+use super::edge_grid::EdgeGrid;
 use crate::geom::Region;
 
 /// Which side of the outline is measured.
@@ -41,96 +40,6 @@ pub struct Narrow {
 const LOCAL_ARC_RADII: f64 = 3.0;
 /// Shrinking-ball iterations; it converges in a handful.
 const MAX_ITERATIONS: usize = 40;
-
-struct Edge {
-    a: DVec2,
-    b: DVec2,
-    ring: usize,
-    /// Arc length along the ring at `a`, mm.
-    arc_a: f64,
-}
-
-/// The outline's edges in a uniform grid, for nearest-point queries.
-struct EdgeGrid {
-    edges: Vec<Edge>,
-    ring_lengths: Vec<f64>,
-    cell_mm: f64,
-    cells: HashMap<(i64, i64), Vec<u32>>,
-}
-
-impl EdgeGrid {
-    fn new(region: &Region, cell_mm: f64) -> Self {
-        let mut edges = Vec::new();
-        let mut ring_lengths = Vec::new();
-        for (ring_index, ring) in region.rings().enumerate() {
-            let mut arc = 0.0;
-            for k in 0..ring.len() {
-                let (a, b) = (ring[k], ring[(k + 1) % ring.len()]);
-                edges.push(Edge { a, b, ring: ring_index, arc_a: arc });
-                arc += a.distance(b);
-            }
-            ring_lengths.push(arc);
-        }
-        let mut cells: HashMap<(i64, i64), Vec<u32>> = HashMap::new();
-        let cell_of = |p: DVec2| ((p.x / cell_mm).floor() as i64, (p.y / cell_mm).floor() as i64);
-        for (i, e) in edges.iter().enumerate() {
-            let (lo, hi) = (cell_of(e.a.min(e.b)), cell_of(e.a.max(e.b)));
-            for x in lo.0..=hi.0 {
-                for y in lo.1..=hi.1 {
-                    cells.entry((x, y)).or_default().push(i as u32);
-                }
-            }
-        }
-        EdgeGrid { edges, ring_lengths, cell_mm, cells }
-    }
-
-    /// The nearest outline point to `c` closer than `radius`, if any,
-    /// ignoring `skip` (the edge the disc is tangent to), as (edge, point).
-    fn nearest_within(&self, c: DVec2, radius: f64, skip: usize) -> Option<(usize, DVec2)> {
-        let cell_of = |p: DVec2| ((p.x / self.cell_mm).floor() as i64, (p.y / self.cell_mm).floor() as i64);
-        let (lo, hi) = (cell_of(c - DVec2::splat(radius)), cell_of(c + DVec2::splat(radius)));
-        let mut best: Option<(f64, usize, DVec2)> = None;
-        for x in lo.0..=hi.0 {
-            for y in lo.1..=hi.1 {
-                for &i in self.cells.get(&(x, y)).into_iter().flatten() {
-                    let i = i as usize;
-                    if i == skip {
-                        continue;
-                    }
-                    let e = &self.edges[i];
-                    let q = closest_on_segment(c, e.a, e.b);
-                    let d = q.distance_squared(c);
-                    if d < radius * radius && best.is_none_or(|(bd, _, _)| d < bd) {
-                        best = Some((d, i, q));
-                    }
-                }
-            }
-        }
-        best.map(|(_, i, q)| (i, q))
-    }
-
-    /// Distance along the ring between two outline points (the shorter way),
-    /// or infinity when they are on different rings.
-    fn arc_between(&self, e1: usize, p1: DVec2, e2: usize, p2: DVec2) -> f64 {
-        let (a, b) = (&self.edges[e1], &self.edges[e2]);
-        if a.ring != b.ring {
-            return f64::INFINITY;
-        }
-        let s1 = a.arc_a + a.a.distance(p1);
-        let s2 = b.arc_a + b.a.distance(p2);
-        let d = (s1 - s2).abs();
-        d.min(self.ring_lengths[a.ring] - d)
-    }
-}
-
-fn closest_on_segment(p: DVec2, a: DVec2, b: DVec2) -> DVec2 {
-    let ab = b - a;
-    let len2 = ab.length_squared();
-    if len2 == 0.0 {
-        return a;
-    }
-    a + ab * ((p - a).dot(ab) / len2).clamp(0.0, 1.0)
-}
 
 /// Every place on `side` of the outline of `region` narrower than
 /// `width_mm`: the outline is sampled every `spacing_mm`, and at each sample

@@ -3,7 +3,7 @@
 use glam::DVec2;
 
 use super::{Exemplar, PairCost, Portal, SliceError, SliceOptions, TopologyDescriptor, cut_positions, portals_at};
-use crate::geom::{Rect, Region, clip_to_rect};
+use crate::geom::{Rect, Region, clip_to_rect, closest_on_segment};
 
 /// One piece of an exemplar, between two cut lines (or an end of the exemplar).
 #[derive(Clone, Debug, PartialEq)]
@@ -99,11 +99,7 @@ fn polygon_of(region: &Region, u: f64, portal: &Portal, inward: f64) -> usize {
     let probe = DVec2::new(u, portal.middle());
     let distance = |ring: &Vec<DVec2>| {
         (0..ring.len())
-            .map(|i| {
-                let (a, b) = (ring[i], ring[(i + 1) % ring.len()]);
-                let t = ((probe - a).dot(b - a) / (b - a).length_squared().max(f64::MIN_POSITIVE)).clamp(0.0, 1.0);
-                (a + (b - a) * t).distance(probe)
-            })
+            .map(|i| closest_on_segment(probe, ring[i], ring[(i + 1) % ring.len()]).1.distance(probe))
             .fold(f64::INFINITY, f64::min)
     };
     (0..region.polygons.len())
