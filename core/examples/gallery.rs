@@ -9,6 +9,9 @@
 //!     [--along circle:30] [--out gallery.png] [EXEMPLAR.svg …]
 //! ```
 
+#[path = "common/sheet.rs"]
+mod sheet;
+
 use std::path::PathBuf;
 use std::time::Instant;
 
@@ -34,32 +37,6 @@ fn pieces(s: &Synthesis) -> Vec<(usize, f64)> {
     } else {
         s.shape_classes.iter().map(|&c| (c, 1.0)).collect()
     }
-}
-
-fn render(region: &Region) -> tiny_skia::Pixmap {
-    let mut pixmap = tiny_skia::Pixmap::new(TILE, TILE).expect("tile size");
-    pixmap.fill(tiny_skia::Color::WHITE);
-    let Some(b) = region.bounds() else { return pixmap };
-    let scale = (f64::from(TILE) - 8.0) / b.width().max(b.height());
-    let (ox, oy) = (
-        0.5 * (f64::from(TILE) - scale * b.width()) - scale * b.min.x,
-        0.5 * (f64::from(TILE) + scale * b.height()) + scale * b.min.y,
-    );
-    let mut path = tiny_skia::PathBuilder::new();
-    for ring in region.rings() {
-        for (k, p) in ring.iter().enumerate() {
-            let (x, y) = ((ox + scale * p.x) as f32, (oy - scale * p.y) as f32);
-            if k == 0 { path.move_to(x, y) } else { path.line_to(x, y) }
-        }
-        path.close();
-    }
-    if let Some(path) = path.finish() {
-        let mut paint = tiny_skia::Paint::default();
-        paint.set_color_rgba8(40, 40, 48, 255);
-        paint.anti_alias = true;
-        pixmap.fill_path(&path, &paint, tiny_skia::FillRule::EvenOdd, tiny_skia::Transform::identity(), None);
-    }
-    pixmap
 }
 
 fn main() {
@@ -119,23 +96,9 @@ fn main() {
         );
         rows.push(found.into_iter().map(|s| s.planar.region).collect());
     }
-    let gap = 4;
-    let columns = ALTERNATIVES;
-    let mut sheet = tiny_skia::Pixmap::new(columns * (TILE + gap) + gap, rows.len().max(1) as u32 * (TILE + gap) + gap)
-        .expect("sheet size");
-    sheet.fill(tiny_skia::Color::from_rgba8(200, 200, 200, 255));
-    for (r, row) in rows.iter().enumerate() {
-        for (c, region) in row.iter().enumerate() {
-            sheet.draw_pixmap(
-                (gap + c as u32 * (TILE + gap)) as i32,
-                (gap + r as u32 * (TILE + gap)) as i32,
-                render(region).as_ref(),
-                &tiny_skia::PixmapPaint::default(),
-                tiny_skia::Transform::identity(),
-                None,
-            );
-        }
-    }
+    let tiles: Vec<tiny_skia::Pixmap> =
+        rows.iter().flatten().map(|region| sheet::render(region, TILE, TILE, 4.0, (40, 40, 48))).collect();
+    let sheet = sheet::sheet(&tiles, ALTERNATIVES as usize, 4);
     sheet.save_png(&out).expect("write the sheet");
     println!("\nwrote {}", out.display());
 }

@@ -8,6 +8,9 @@
 //! ```
 //! Without files it runs the built-in exemplars. Prints a table of findings.
 
+#[path = "common/sheet.rs"]
+mod sheet;
+
 use std::path::PathBuf;
 
 use tracery_core::DVec2;
@@ -17,6 +20,8 @@ use tracery_core::geom::Region;
 use tracery_core::print::{PrintSettings, Printability, finish};
 use tracery_core::vector_brush::{BUILTIN_NAMES, Exemplar, LoadOptions, Settings, builtin, make_product};
 
+use sheet::{Fit, paint};
+
 const TILE: u32 = 420;
 
 struct Tile {
@@ -24,52 +29,11 @@ struct Tile {
     found: Printability,
 }
 
-/// Maps millimetres into a tile.
-struct Fit {
-    scale: f64,
-    offset: DVec2,
-}
-
-impl Fit {
-    fn new(region: &Region) -> Fit {
-        let b = region.bounds().expect("a pattern");
-        let margin = 8.0;
-        let scale = ((f64::from(TILE) - 2.0 * margin) / b.width()).min((f64::from(TILE) - 2.0 * margin) / b.height());
-        let offset = DVec2::new(
-            0.5 * (f64::from(TILE) - scale * b.width()) - scale * b.min.x,
-            0.5 * (f64::from(TILE) + scale * b.height()) + scale * b.min.y,
-        );
-        Fit { scale, offset }
-    }
-
-    fn at(&self, p: DVec2) -> (f32, f32) {
-        ((self.offset.x + self.scale * p.x) as f32, (self.offset.y - self.scale * p.y) as f32)
-    }
-}
-
-fn paint(r: u8, g: u8, b: u8) -> tiny_skia::Paint<'static> {
-    let mut paint = tiny_skia::Paint::default();
-    paint.set_color_rgba8(r, g, b, 255);
-    paint.anti_alias = true;
-    paint
-}
-
 fn render(tile: &Tile) -> tiny_skia::Pixmap {
-    let mut pixmap = tiny_skia::Pixmap::new(TILE, TILE).expect("tile size");
-    pixmap.fill(tiny_skia::Color::WHITE);
-    let fit = Fit::new(&tile.region);
-    let mut path = tiny_skia::PathBuilder::new();
-    for ring in tile.region.rings() {
-        for (k, p) in ring.iter().enumerate() {
-            let (x, y) = fit.at(*p);
-            if k == 0 { path.move_to(x, y) } else { path.line_to(x, y) }
-        }
-        path.close();
-    }
+    const MARGIN: f64 = 8.0;
+    let mut pixmap = sheet::render(&tile.region, TILE, TILE, MARGIN, (60, 60, 60));
+    let fit = Fit::new(&tile.region, TILE, TILE, MARGIN).expect("a pattern");
     let id = tiny_skia::Transform::identity();
-    if let Some(path) = path.finish() {
-        pixmap.fill_path(&path, &paint(60, 60, 60), tiny_skia::FillRule::EvenOdd, id, None);
-    }
     let mut mark = |spans: &mut dyn Iterator<Item = [DVec2; 2]>, at: &mut dyn Iterator<Item = DVec2>, colour| {
         let mut path = tiny_skia::PathBuilder::new();
         for [a, b] in spans {
@@ -154,22 +118,8 @@ fn main() {
         );
         rows.push([Tile { region: checked.region_mm, found: a }, Tile { region: thick.region_mm, found: b }]);
     }
-    let gap = 6;
-    let (w, h) = (2 * (TILE + gap) + gap, rows.len() as u32 * (TILE + gap) + gap);
-    let mut sheet = tiny_skia::Pixmap::new(w, h.max(1)).expect("sheet size");
-    sheet.fill(tiny_skia::Color::from_rgba8(200, 200, 200, 255));
-    for (r, row) in rows.iter().enumerate() {
-        for (c, tile) in row.iter().enumerate() {
-            sheet.draw_pixmap(
-                (gap + c as u32 * (TILE + gap)) as i32,
-                (gap + r as u32 * (TILE + gap)) as i32,
-                render(tile).as_ref(),
-                &tiny_skia::PixmapPaint::default(),
-                tiny_skia::Transform::identity(),
-                None,
-            );
-        }
-    }
+    let tiles: Vec<tiny_skia::Pixmap> = rows.iter().flatten().map(render).collect();
+    let sheet = sheet::sheet(&tiles, 2, 6);
     sheet.save_png(&out).expect("write the sheet");
     println!("\nwrote {} (left: as synthesized; right: thickened)", out.display());
 }

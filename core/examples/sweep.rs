@@ -14,6 +14,9 @@
 //! of the shape classes along the pattern, the seam tangent jump, and the
 //! time of the whole pipeline. The summary prints one row per curve.
 
+#[path = "common/sheet.rs"]
+mod sheet;
+
 use std::path::PathBuf;
 use std::time::Instant;
 
@@ -201,32 +204,6 @@ fn run_one(
     run
 }
 
-/// Draws `region` black on white, fitted into a `width` × `height` tile.
-fn render(region: &Region, width: u32, height: u32) -> tiny_skia::Pixmap {
-    let mut pixmap = tiny_skia::Pixmap::new(width, height).expect("tile size");
-    pixmap.fill(tiny_skia::Color::WHITE);
-    let Some(bounds) = region.bounds() else { return pixmap };
-    let margin = 4.0;
-    let scale =
-        ((f64::from(width) - 2.0 * margin) / bounds.width()).min((f64::from(height) - 2.0 * margin) / bounds.height());
-    let offset_x = 0.5 * (f64::from(width) - scale * bounds.width()) - scale * bounds.min.x;
-    let offset_y = 0.5 * (f64::from(height) + scale * bounds.height()) + scale * bounds.min.y;
-    let mut path = tiny_skia::PathBuilder::new();
-    for ring in region.rings() {
-        for (k, p) in ring.iter().enumerate() {
-            let (x, y) = ((offset_x + scale * p.x) as f32, (offset_y - scale * p.y) as f32);
-            if k == 0 { path.move_to(x, y) } else { path.line_to(x, y) }
-        }
-        path.close();
-    }
-    let Some(path) = path.finish() else { return pixmap };
-    let mut paint = tiny_skia::Paint::default();
-    paint.set_color(tiny_skia::Color::BLACK);
-    paint.anti_alias = true;
-    pixmap.fill_path(&path, &paint, tiny_skia::FillRule::EvenOdd, tiny_skia::Transform::identity(), None);
-    pixmap
-}
-
 /// One contact sheet per curve: the answered runs of one target, in a grid,
 /// with a list of what each tile is next to it.
 fn contact_sheets(runs: &[Run], curves: &[String], target: &str, dir: &std::path::Path) {
@@ -239,33 +216,20 @@ fn contact_sheets(runs: &[Run], curves: &[String], target: &str, dir: &std::path
         }
         let closed = shown[0].region.as_ref().and_then(|r| r.bounds()).is_some_and(|b| b.height() > 0.3 * b.width());
         let (tile_w, tile_h, columns) = if closed { (300, 300, 6) } else { (1000, 90, 2) };
-        let columns = columns.min(shown.len());
-        let rows = shown.len().div_ceil(columns) as u32;
-        let gap = 6;
-        let mut sheet = tiny_skia::Pixmap::new(columns as u32 * (tile_w + gap) + gap, rows * (tile_h + gap) + gap)
-            .expect("sheet size");
-        sheet.fill(tiny_skia::Color::from_rgba8(200, 200, 200, 255));
         let mut index = String::new();
+        let mut tiles = Vec::new();
         for (k, run) in shown.iter().enumerate() {
-            let tile = render(run.region.as_ref().expect("answered"), tile_w, tile_h);
-            let (col, row) = ((k % columns) as u32, (k / columns) as u32);
-            sheet.draw_pixmap(
-                (gap + col * (tile_w + gap)) as i32,
-                (gap + row * (tile_h + gap)) as i32,
-                tile.as_ref(),
-                &tiny_skia::PixmapPaint::default(),
-                tiny_skia::Transform::identity(),
-                None,
-            );
+            tiles.push(sheet::render(run.region.as_ref().expect("answered"), tile_w, tile_h, 4.0, (0, 0, 0)));
             index += &format!(
                 "row {} col {}: {} ({} pieces, exact {})\n",
-                row + 1,
-                col + 1,
+                k / columns + 1,
+                k % columns + 1,
                 run.ornament,
                 run.pieces,
                 run.exact
             );
         }
+        let sheet = sheet::sheet(&tiles, columns, 6);
         let stem = curve.replace(':', "");
         sheet.save_png(dir.join(format!("{stem}.png"))).expect("write the sheet");
         std::fs::write(dir.join(format!("{stem}.txt")), index).expect("write the sheet index");
