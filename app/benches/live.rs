@@ -67,7 +67,7 @@ fn replay(exemplar: &str, speed_mm_s: f64, reuse: bool) -> (Vec<f64>, Vec<usize>
         if frame < frames && now >= start + FRAME * frame as u32 {
             let count = ((frame + 1) * samples_per_frame).min(stroke.len());
             drawn.push((now, count));
-            if LiveJob::curve(&stroke[..count]).is_some() {
+            if LiveJob::long_enough(&stroke[..count]) {
                 let session = if reuse { session.clone() } else { Session::default() };
                 let job = LiveJob {
                     raw: Arc::new(stroke[..count].to_vec()),

@@ -152,7 +152,7 @@ impl TraceryApp {
     /// Asks for the pattern of the stroke being drawn, or forgets it.
     fn submit_live(&mut self, now: Instant) {
         let stroke = match &self.gesture {
-            Some(Gesture::Stroke(stroke)) if LiveJob::curve(&stroke.points).is_some() => stroke,
+            Some(Gesture::Stroke(stroke)) if LiveJob::long_enough(&stroke.points) => stroke,
             _ => {
                 self.live.retain(&[]);
                 return;

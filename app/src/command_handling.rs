@@ -176,7 +176,7 @@ impl TraceryApp {
     }
 
     /// Writes the 3MF of the exported curves to `path`: one object per
-    /// curve, named after it and coloured as on the canvas.
+    /// curve, named after it, each with a colour of its own.
     pub fn export_3mf_to(&mut self, path: &Path) {
         let result = self.export_products().and_then(|products| {
             let objects: Vec<ThreeMfObject<'_>> = products

@@ -18,7 +18,7 @@ use tracery_core::vector_brush::{Exemplar, Growing, Settings, SynthesisError};
 use tracery_core::{DVec2, Product};
 
 use crate::document::SMOOTHING_SPACING_MM;
-use crate::tools::draw::{CONTROL_SPACING_MM, stroke_to_control_points};
+use crate::tools::draw::{CONTROL_SPACING_MM, long_enough, stroke_to_control_points};
 use crate::worker::Job;
 
 /// The worker slot of the stroke being drawn.
@@ -58,6 +58,12 @@ impl PartialEq for LiveJob {
 }
 
 impl LiveJob {
+    /// Whether the stroke so far is long enough to carry a pattern (cheap:
+    /// the UI asks every frame).
+    pub fn long_enough(raw: &[DVec2]) -> bool {
+        long_enough(raw, CONTROL_SPACING_MM)
+    }
+
     /// The curve the stroke so far becomes (open, smoothed as a finished
     /// curve is), or `None` while it is too short.
     pub fn curve(raw: &[DVec2]) -> Option<Curve> {

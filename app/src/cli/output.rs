@@ -165,7 +165,9 @@ pub fn write_outputs(mode: &'static str, exemplar: &str, args: &OutputArgs, prod
     let mut stl = Vec::new();
     let (mut triangles, mut shells) = (0, 0);
     if let Some(mesh) = &product.mesh_mm {
-        write_stl(mesh, &mut stl)?;
+        if args.stl.is_some() {
+            write_stl(mesh, &mut stl)?;
+        }
         (triangles, shells) = (mesh.triangles.len(), mesh.shell_count());
     } else if args.stl.is_some() || args.three_mf.is_some() {
         bail!("this mode makes no solid to write as STL or 3MF");
@@ -176,7 +178,9 @@ pub fn write_outputs(mode: &'static str, exemplar: &str, args: &OutputArgs, prod
             ThreeMfObject { name: format!("{exemplar} along {}", args.along), colour_rgb: object_colour(0), mesh };
         write_3mf(&[object], &mut three_mf)?;
     }
-    let svg = write_svg(&product.region_mm, &args.svg_options()?);
+    let svg_options = args.svg_options()?;
+    // A cut SVG unites and offsets the region: only when it is asked for.
+    let svg = args.svg.as_ref().map(|_| write_svg(&product.region_mm, &svg_options));
     let report = Report {
         mode,
         exemplar: exemplar.to_string(),
@@ -199,7 +203,7 @@ pub fn write_outputs(mode: &'static str, exemplar: &str, args: &OutputArgs, prod
     if let Some(path) = &args.three_mf {
         write_atomically(path, three_mf.get_ref())?;
     }
-    if let Some(path) = &args.svg {
+    if let (Some(path), Some(svg)) = (&args.svg, &svg) {
         write_atomically(path, svg.as_bytes())?;
     }
     if let Some(path) = &args.report {

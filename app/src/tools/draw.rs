@@ -39,14 +39,21 @@ impl Stroke {
     }
 }
 
+/// Whether a raw stroke is long enough to become a curve with control
+/// points about every `spacing_mm`.
+pub fn long_enough(raw: &[DVec2], spacing_mm: f64) -> bool {
+    let length: f64 = raw.windows(2).map(|w| w[0].distance(w[1])).sum();
+    raw.len() >= 2 && length >= 3.0 * spacing_mm.min(2.0)
+}
+
 /// Turns a raw stroke into control points: evenly spaced, about every
 /// `spacing_mm`, and whether it closes into a loop (its end came back near
 /// its start, within `close_mm`).
 pub fn stroke_to_control_points(raw: &[DVec2], spacing_mm: f64, close_mm: f64) -> Option<(Vec<DVec2>, bool)> {
-    let length: f64 = raw.windows(2).map(|w| w[0].distance(w[1])).sum();
-    if raw.len() < 2 || length < 3.0 * spacing_mm.min(2.0) {
+    if !long_enough(raw, spacing_mm) {
         return None;
     }
+    let length: f64 = raw.windows(2).map(|w| w[0].distance(w[1])).sum();
     let closed = raw.len() > 8 && raw[0].distance(*raw.last()?) <= close_mm && length > 4.0 * close_mm;
     let curve = Curve::from_polyline(raw, closed).ok()?;
     let count = ((curve.length() / spacing_mm).round() as usize).max(if closed { 4 } else { 2 });
