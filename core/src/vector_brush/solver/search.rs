@@ -256,7 +256,6 @@ impl<'p> Search<'p> {
 
     fn run(&mut self) -> Result<(), SolveError> {
         let problem = self.problem;
-        let n = problem.n();
         let (max_len, max_key) = (self.window.1, self.max_key);
         let mut first_key = 0;
         if let Some(key) = self.seed_prefix()? {
@@ -295,21 +294,8 @@ impl<'p> Search<'p> {
                     // Never below the next key, whatever the rounding: the
                     // search runs in order of keys.
                     let next_key = problem.grid.key(next_length).max(key + 1);
-                    let raw = state.delta * problem.keep[a * n + b] + problem.tau[a * n + b] as f32;
-                    let Some((delta, held_back)) = problem.hold_in_band(raw, b) else {
+                    let Some(next) = self.follow(&state, index, key, b) else {
                         continue;
-                    };
-                    let descriptor = problem.join(&mut self.interner, state.descriptor, b);
-                    if descriptor == PRUNED {
-                        continue;
-                    }
-                    let next = State {
-                        cost: state.cost + problem.seam_cost(a, b, key) + held_back,
-                        length: next_length,
-                        parent: index,
-                        descriptor,
-                        delta,
-                        piece: b as u16,
                     };
                     let floor =
                         if self.variety() { problem.options.variety * self.auto[index as usize].value() } else { 0.0 };
@@ -362,6 +348,29 @@ impl<'p> Search<'p> {
         }
     }
 
+    /// The state after `state` (in the arena at `parent`, keyed `key`) when
+    /// piece `b` follows it, or `None` where `b` cannot be held in the band
+    /// or the targets could no longer be met.
+    #[inline]
+    fn follow(&mut self, state: &State, parent: u32, key: u32, b: usize) -> Option<State> {
+        let problem = self.problem;
+        let (a, n) = (usize::from(state.piece), problem.n());
+        let raw = state.delta * problem.keep[a * n + b] + problem.tau[a * n + b] as f32;
+        let (delta, held_back) = problem.hold_in_band(raw, b)?;
+        let descriptor = problem.join(&mut self.interner, state.descriptor, b);
+        if descriptor == PRUNED {
+            return None;
+        }
+        Some(State {
+            cost: state.cost + problem.seam_cost(a, b, key) + held_back,
+            length: state.length + problem.widths[b],
+            parent,
+            descriptor,
+            delta,
+            piece: b as u16,
+        })
+    }
+
     /// Lays the fixed beginning (`SolveOptions::prefix`, open curves) as a
     /// chain of states, the search growing only from its last one. Returns
     /// that state's key, or `None` when there is no prefix or it cannot be
@@ -392,12 +401,10 @@ impl<'p> Search<'p> {
         let mut correlation = Autocorrelation::default().push(s, &problem.similarity);
         let (arena_start, auto_start) = (self.arena.len(), self.auto.len());
         for &b in &prefix[1..] {
-            let a = usize::from(state.piece);
-            let raw = state.delta * problem.keep[a * n + b] + problem.tau[a * n + b] as f32;
-            let held = problem.hold_in_band(raw, b);
-            let descriptor = problem.join(&mut self.interner, state.descriptor, b);
-            let (Some((delta, held_back)), false) = (held, descriptor == PRUNED || problem.cost[a * n + b].is_nan())
-            else {
+            let key = problem.grid.key(state.length).max(1);
+            let parent = self.arena.len() as u32;
+            let compatible = !problem.cost[usize::from(state.piece) * n + b].is_nan();
+            let Some(next) = self.follow(&state, parent, key, b).filter(|_| compatible) else {
                 self.arena.truncate(arena_start);
                 self.auto.truncate(auto_start);
                 return Ok(None);
@@ -407,15 +414,7 @@ impl<'p> Search<'p> {
             if self.variety() {
                 self.auto.push(correlation);
             }
-            let key = problem.grid.key(state.length).max(1);
-            state = State {
-                cost: state.cost + problem.seam_cost(a, b, key) + held_back,
-                length: state.length + problem.widths[b],
-                parent: (self.arena.len() - 1) as u32,
-                descriptor,
-                delta,
-                piece: b as u16,
-            };
+            state = next;
             correlation = correlation.push(b, &problem.similarity);
         }
         if state.length > self.window.1 {
