@@ -14,7 +14,10 @@ use tracery_core::vector_brush::{
 fn exhaustive(set: &PieceSet, options: &SolveOptions) -> Option<f64> {
     for tolerance in tolerance_levels(options) {
         let target = options.target_length;
-        let (lo, hi) = ((target - tolerance).max(0.0), target + tolerance);
+        // The solver's window has a hair of slack (1e-9 of the length), so
+        // that sums of the same widths in another order are accepted alike.
+        let slack = 1e-9 * target;
+        let (lo, hi) = ((target - tolerance - slack).max(0.0), target + tolerance + slack);
         let mut best: Option<f64> = None;
         let starts: Vec<usize> = match options.curve {
             CurveKind::Open => (0..set.len()).filter(|&i| set.pieces[i].left.is_empty()).collect(),

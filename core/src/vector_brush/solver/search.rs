@@ -32,6 +32,10 @@ pub(super) struct Problem<'a> {
     jitter: f64,
     /// What each seam pays for having been used by earlier solutions.
     reuse: Vec<f64>,
+    /// On loops, the order of the start pieces: the search from a piece uses
+    /// only pieces ranked at or after it, so each cycle is searched once, in
+    /// the rotation that starts with its first-ranked piece.
+    rank: Vec<u32>,
     similarity: Similarity,
     states: &'a AtomicUsize,
     created: &'a AtomicUsize,
@@ -146,11 +150,11 @@ impl Problem<'_> {
         }
     }
 
-    /// One search from the given start pieces, using pieces `>= min_piece`;
-    /// returns the best finished sequence whose true length is in `window`
-    /// (exemplar units).
-    fn search(&self, starts: &[usize], min_piece: usize, window: (f64, f64)) -> Result<Option<Found>, SolveError> {
-        let mut search = Search::new(self, starts, min_piece, window);
+    /// One search from the given start pieces, using pieces ranked at
+    /// `min_rank` or later; returns the best finished sequence whose true
+    /// length is in `window` (exemplar units).
+    fn search(&self, starts: &[usize], min_rank: u32, window: (f64, f64)) -> Result<Option<Found>, SolveError> {
+        let mut search = Search::new(self, starts, min_rank, window);
         let result = search.run();
         self.states.fetch_sub(search.arena.len(), Ordering::Relaxed);
         result?;
@@ -179,10 +183,11 @@ pub(super) struct Search<'p> {
 }
 
 impl<'p> Search<'p> {
-    fn new(problem: &'p Problem<'p>, starts: &'p [usize], min_piece: usize, window: (f64, f64)) -> Self {
+    fn new(problem: &'p Problem<'p>, starts: &'p [usize], min_rank: u32, window: (f64, f64)) -> Self {
         let n = problem.n();
-        let compatible =
-            (0..n).map(|a| (min_piece..n).filter(|&b| !problem.cost[a * n + b].is_nan()).collect()).collect();
+        let compatible = (0..n)
+            .map(|a| (0..n).filter(|&b| problem.rank[b] >= min_rank && !problem.cost[a * n + b].is_nan()).collect())
+            .collect();
         // A piece of `k` whole steps moves the key by at most `k + 1`.
         let ring = problem.steps.iter().copied().max().unwrap_or(1) as usize + 2;
         Search {
@@ -313,7 +318,7 @@ impl<'p> Search<'p> {
         let state = &self.arena[index as usize];
         let a = state.piece as usize;
         let target = options.target_length;
-        let epsilon = (self.window.1 - target).max(f64::MIN_POSITIVE);
+        let epsilon = (self.window.1 - target * (1.0 + LENGTH_SLACK)).max(f64::MIN_POSITIVE);
         let mut total = state.cost + options.length_weight * ((state.length - target) / epsilon).powi(2);
         if options.curve == CurveKind::Closed {
             // One search per start piece: its only start closes the loop.
@@ -460,6 +465,9 @@ pub(super) fn band_allowance(band_height: f64, extent: f64) -> f64 {
 /// the mismatch, and beyond this the bend would show.
 pub const MAX_HOLD: f64 = 0.2;
 
+/// Slack on the accepted lengths, relative to the target length.
+const LENGTH_SLACK: f64 = 1e-9;
+
 /// Runs the searches for growing tolerances until one finds a solution.
 pub(super) fn search_all(
     set: &PieceSet,
@@ -508,10 +516,28 @@ pub(super) fn search_all(
         CurveKind::Open => 1,
         CurveKind::Closed => n,
     };
-    let window_of = |tolerance: f64| ((options.target_length - tolerance).max(0.0), options.target_length + tolerance);
+    // Sums of the same widths in another order differ in the last bits: a
+    // hair of slack keeps a loop's acceptance the same in every rotation.
+    let slack = LENGTH_SLACK * options.target_length;
+    let window_of = |tolerance: f64| {
+        ((options.target_length - tolerance - slack).max(0.0), options.target_length + tolerance + slack)
+    };
     let work_total = runs_per_level * (grid.key(window_of(tolerances[0]).1) as usize + 1);
+    // A loop's search carries its start piece's left portals until the loop
+    // closes, and the first search may use every piece: starting with the
+    // pieces that leave the fewest portals open keeps the largest searches
+    // the smallest.
+    let mut order: Vec<usize> = (0..n).collect();
+    if options.curve == CurveKind::Closed {
+        order.sort_by_key(|&p| set.pieces[p].left.len());
+    }
+    let mut rank = vec![0; n];
+    for (r, &p) in order.iter().enumerate() {
+        rank[p] = r as u32;
+    }
     let mut problem = Problem {
         set,
+        rank,
         options,
         grid,
         steps,
@@ -543,7 +569,7 @@ pub(super) fn search_all(
             }
             CurveKind::Closed => {
                 let results: Vec<Result<Option<Found>, SolveError>> =
-                    (0..n).into_par_iter().map(|s| problem.search(&[s], s, window)).collect();
+                    (0..n).into_par_iter().map(|s| problem.search(&[s], problem.rank[s], window)).collect();
                 let mut best: Option<Found> = None;
                 for r in results {
                     if let Some(f) = r?
