@@ -91,6 +91,12 @@ pub enum Warning {
         /// Why.
         reason: String,
     },
+    /// The exact search needed more memory than the cap: a bounded search
+    /// found the pattern, which meets every target but may not be the cheapest.
+    SearchBounded {
+        /// Partial patterns kept per length.
+        width: usize,
+    },
 }
 
 impl std::fmt::Display for Warning {
@@ -139,6 +145,10 @@ impl std::fmt::Display for Warning {
                 write!(f, "the jump rings joined parts of the pattern: {before} → {after} component(s)")
             }
             Warning::ThickeningFailed { reason } => write!(f, "thin features were left as they are: {reason}"),
+            Warning::SearchBounded { width } => write!(
+                f,
+                "the exact search needed more memory than allowed, so only the {width} cheapest partial patterns of each length were kept: the pattern meets every target, but a better-matching one may exist"
+            ),
         }
     }
 }

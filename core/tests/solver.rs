@@ -348,3 +348,63 @@ fn band_height_bounds_the_accumulated_offsets() {
     let error = solve(&set, &options, &Control::default()).unwrap_err();
     assert_eq!(error, SolveError::NoSolution(Unmet::Band));
 }
+
+/// Where the exact search needs more states than the cap, a bounded search
+/// answers instead: the pattern must still meet every target (recounted
+/// here from the pieces' own descriptors), be marked as bounded, and cost
+/// little more than the exact answer on instances where both run.
+#[test]
+fn a_bounded_search_answers_past_the_cap_close_to_exact() {
+    let (mut compared, mut worst_gap, mut total_gap) = (0, 0.0f64, 0.0);
+    for name in BUILTIN_NAMES {
+        let set = PieceSet::new(&builtin(name).unwrap(), &SliceOptions::default()).unwrap();
+        for curve in [CurveKind::Open, CurveKind::Closed] {
+            for (components, holes) in [(Target::Exactly(1), Target::Any), (Target::Any, Target::Any)] {
+                let mut options = SolveOptions::new(60.0 * set.exemplar_width / set.len() as f64);
+                options.curve = curve;
+                options.components = components;
+                options.holes = holes;
+                options.closed_pattern = curve == CurveKind::Closed;
+                options.variety = 0.3;
+                options.band_height = 1.2 * set.exemplar_height;
+                let context = format!("{name} {curve:?} {components:?}");
+                let Ok(exact) = solve(&set, &options, &Control::default()) else { continue };
+                assert_eq!(exact.bounded, None, "{context}");
+                // A cap at half of what the exact search used.
+                options.max_states = (exact.states / 2).max(200);
+                let bounded = match solve(&set, &options, &Control::default()) {
+                    Ok(s) => s,
+                    Err(SolveError::TooManyStates { .. }) => {
+                        eprintln!("{context}: cap {} still reached", options.max_states);
+                        continue;
+                    }
+                    Err(e) => panic!("{context}: {e}"),
+                };
+                if bounded.bounded.is_none() {
+                    eprintln!("{context}: exact within {} states", options.max_states);
+                    continue;
+                }
+                let mut d = set.pieces[bounded.pieces[0]].descriptor.clone();
+                for w in bounded.pieces.windows(2) {
+                    assert!(set.pair(w[0], w[1]).is_some(), "{context}: incompatible seam");
+                    d = d.join(&set.pieces[w[1]].descriptor).unwrap();
+                }
+                let counted = match curve {
+                    CurveKind::Open => {
+                        assert!(d.is_finished(), "{context}");
+                        (d.components(), d.holes(), 1)
+                    }
+                    _ => d.close_loop().map(|t| (t.components, t.holes, t.wraps)).unwrap(),
+                };
+                assert!(components.accepts(counted.0) && holes.accepts(counted.1) && counted.2 > 0, "{context}");
+                let gap = (bounded.cost - exact.cost) / exact.cost.abs().max(1e-3);
+                worst_gap = worst_gap.max(gap);
+                total_gap += gap;
+                compared += 1;
+            }
+        }
+    }
+    eprintln!("{compared} bounded instances, mean gap {:.4}, worst {:.4}", total_gap / f64::from(compared), worst_gap);
+    assert!(compared >= 6, "only {compared} instances went past the cap");
+    assert!(worst_gap < 0.25, "worst gap {worst_gap}");
+}

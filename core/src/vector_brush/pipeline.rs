@@ -245,6 +245,9 @@ pub(crate) fn laid_out(
         });
 
         let mut warnings = planar.warnings.clone();
+        if let Some(width) = solution.bounded {
+            warnings.push(Warning::SearchBounded { width });
+        }
         let stretch = curve.length() / (solution.length * scale) - 1.0;
         if stretch.abs() > LENGTH_WARNING {
             warnings.push(Warning::LengthMismatch { stretched: stretch > 0.0, percent: stretch.abs() * 100.0 });

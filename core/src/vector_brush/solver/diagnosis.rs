@@ -10,11 +10,11 @@ use crate::vector_brush::{PieceSet, SolveError, Unmet};
 pub(super) fn diagnose(set: &PieceSet, options: &SolveOptions, control: &Control) -> Result<Unmet, SolveError> {
     let feasible = |components: Target, holes: Target, closed_pattern: bool| -> Result<bool, SolveError> {
         let relaxed = SolveOptions { components, holes, closed_pattern, variety: 0.0, seed: 0, ..options.clone() };
-        Ok(search_all(set, &relaxed, &control.silent())?.is_some())
+        Ok(search_all(set, &relaxed, false, &control.silent())?.is_some())
     };
     if options.band_height.is_finite() {
         let unbounded = SolveOptions { band_height: f64::INFINITY, ..options.clone() };
-        if search_all(set, &unbounded, &control.silent())?.is_some() {
+        if search_all(set, &unbounded, false, &control.silent())?.is_some() {
             return Ok(Unmet::Band);
         }
     }

@@ -35,6 +35,7 @@
 mod diagnosis;
 mod search;
 mod state;
+mod targets;
 
 use serde::{Deserialize, Serialize};
 
@@ -196,6 +197,12 @@ pub struct Solution {
     pub wraps: u32,
     /// DP states created over all searches.
     pub states: usize,
+    /// `Some(width)` when the exact search needed more states than the cap
+    /// and a bounded one (the `width` cheapest states of each length kept)
+    /// found this pattern instead: it meets every target, but a cheaper one
+    /// may exist.
+    #[serde(default)]
+    pub bounded: Option<usize>,
 }
 
 /// How far past the band's edge, as a fraction of half the band, the solver
@@ -203,9 +210,11 @@ pub struct Solution {
 /// remaining mismatch, so this leaves room under the 5% the geometry allows.
 pub const BAND_MARGIN: f64 = 0.03;
 
-/// Bytes one DP state takes, with its share of the bucket maps and the
-/// variety history; used to turn the state cap into megabytes.
-pub const STATE_BYTES: usize = 124;
+/// Bytes one DP state takes: its 12-byte trace, and its share of the open
+/// states (whole, with their variety history) and of the bucket tables,
+/// measured as peak memory over states on the corpus's largest searches;
+/// used to turn the state cap into megabytes.
+pub const STATE_BYTES: usize = 24;
 
 /// Finds the best piece sequence for `options`.
 ///
@@ -241,12 +250,14 @@ pub fn solve(set: &PieceSet, options: &SolveOptions, control: &Control) -> Resul
         }
         _ => options,
     };
-    let mut found = match search_all(search_set, options, control) {
+    let mut found = match search_all(search_set, options, false, control) {
         Err(SolveError::TooManyStates { .. }) if !options.prefix.is_empty() => None,
-        other => other?,
+        other => other.or_else(|e| bounded_retry(search_set, options, e, control))?,
     };
     if found.is_none() && !options.prefix.is_empty() {
-        found = search_all(search_set, &SolveOptions { prefix: Vec::new(), ..options.clone() }, control)?;
+        let fresh = SolveOptions { prefix: Vec::new(), ..options.clone() };
+        found = search_all(search_set, &fresh, false, control)
+            .or_else(|e| bounded_retry(search_set, &fresh, e, control))?;
     }
     match found {
         Some(mut solution) => {
@@ -258,6 +269,24 @@ pub fn solve(set: &PieceSet, options: &SolveOptions, control: &Control) -> Resul
             Ok(solution)
         }
         None => Err(SolveError::NoSolution(diagnose(search_set, options, control)?)),
+    }
+}
+
+/// Where the exact search needs more states than the cap, a bounded one
+/// (the cheapest states of each length) looks for a pattern that meets every
+/// target. Finding none proves nothing, so the cap error stands then.
+fn bounded_retry(
+    set: &PieceSet,
+    options: &SolveOptions,
+    error: SolveError,
+    control: &Control,
+) -> Result<Option<Solution>, SolveError> {
+    if !matches!(error, SolveError::TooManyStates { .. }) {
+        return Err(error);
+    }
+    match search_all(set, options, true, control)? {
+        Some(solution) => Ok(Some(solution)),
+        None => Err(error),
     }
 }
 

@@ -2,14 +2,14 @@
 //! over growing length tolerances, and the finished solution recomputed from
 //! the pieces themselves.
 
-use std::sync::atomic::{AtomicUsize, Ordering};
+use std::sync::atomic::{AtomicBool, AtomicUsize, Ordering};
 
 use rayon::prelude::*;
 
-use super::state::{Bucket, Interner, LengthGrid, NO_PARENT, PRUNED, State, UNKNOWN};
-use super::{BAND_MARGIN, CurveKind, STATE_BYTES, Solution, SolveOptions, Target, tolerance_levels};
+use super::state::{Bucket, Interner, LengthGrid, NO_PARENT, PRUNED, State, Trace, UNKNOWN};
+use super::{BAND_MARGIN, CurveKind, STATE_BYTES, Solution, SolveOptions, tolerance_levels};
 use crate::control::{Control, StateCap};
-use crate::vector_brush::{Autocorrelation, MATCH_WEIGHT, PieceSet, Similarity, SolveError, TopologyDescriptor};
+use crate::vector_brush::{Autocorrelation, MATCH_WEIGHT, PieceSet, Similarity, SolveError};
 
 /// Everything one search needs that does not change while it runs.
 pub(super) struct Problem<'a> {
@@ -37,6 +37,10 @@ pub(super) struct Problem<'a> {
     /// the rotation that starts with its first-ranked piece.
     rank: Vec<u32>,
     similarity: Similarity,
+    /// When set, at most this many states of each length are expanded (the
+    /// cheapest), and `bounded` records that some were dropped.
+    beam: Option<usize>,
+    bounded: &'a AtomicBool,
     states: &'a AtomicUsize,
     created: &'a AtomicUsize,
     work_done: &'a AtomicUsize,
@@ -64,17 +68,6 @@ impl Problem<'_> {
         self.set.len()
     }
 
-    fn clamp(&self, d: &TopologyDescriptor) -> TopologyDescriptor {
-        let closed = if self.options.components == Target::Any { 0 } else { d.closed_components() as u16 };
-        let holes = if self.options.holes == Target::Any { 0 } else { d.holes() as u16 };
-        d.with_counters(closed, holes)
-    }
-
-    /// Whether a partial solution can still meet the targets.
-    fn viable(&self, d: &TopologyDescriptor) -> bool {
-        !self.options.components.exceeded_by(d.min_final_components()) && !self.options.holes.exceeded_by(d.holes())
-    }
-
     fn join(&self, interner: &mut Interner, descriptor: u32, piece: usize) -> u32 {
         let slot = descriptor as usize * interner.pieces + piece;
         let cached = interner.joins[slot];
@@ -83,8 +76,8 @@ impl Problem<'_> {
         }
         let joined = interner.list[descriptor as usize]
             .join(&self.set.pieces[piece].descriptor)
-            .map(|d| self.clamp(&d))
-            .filter(|d| self.viable(d));
+            .map(|d| self.options.clamp(&d))
+            .filter(|d| self.options.viable(d));
         let id = match joined {
             Some(d) => interner.intern(d),
             None => PRUNED,
@@ -131,18 +124,6 @@ impl Problem<'_> {
         base + self.jitter * (h >> 11) as f64 / (1u64 << 53) as f64
     }
 
-    pub(super) fn finished(&self, d: &TopologyDescriptor) -> Option<(u32, u32, u32)> {
-        match self.options.curve {
-            CurveKind::Open => d.is_finished().then(|| (d.components(), d.holes(), 0)),
-            CurveKind::Closed => d.close_loop().map(|t| (t.components, t.holes, t.wraps)),
-        }
-    }
-
-    fn meets_targets(&self, t: (u32, u32, u32)) -> bool {
-        let loop_ok = self.options.curve == CurveKind::Open || !self.options.closed_pattern || t.2 > 0;
-        self.options.components.accepts(t.0) && self.options.holes.accepts(t.1) && loop_ok
-    }
-
     fn report_progress(&self) {
         let done = self.work_done.fetch_add(1, Ordering::Relaxed) + 1;
         if done.is_multiple_of(16) || done == self.work_total {
@@ -156,13 +137,14 @@ impl Problem<'_> {
     fn search(&self, starts: &[usize], min_rank: u32, window: (f64, f64)) -> Result<Option<Found>, SolveError> {
         let mut search = Search::new(self, starts, min_rank, window);
         let result = search.run();
-        self.states.fetch_sub(search.arena.len(), Ordering::Relaxed);
+        self.states.fetch_sub(search.counted, Ordering::Relaxed);
         result?;
         Ok(search.best.map(|(total, end)| search.backtrack(end, total)))
     }
 }
 
-/// The table of one search: states in an arena, grouped by length.
+/// The table of one search: open states grouped by length, expanded ones
+/// in an arena of traces.
 pub(super) struct Search<'p> {
     problem: &'p Problem<'p>,
     starts: &'p [usize],
@@ -173,9 +155,10 @@ pub(super) struct Search<'p> {
     /// For each piece, the pieces that may follow it.
     compatible: Vec<Vec<usize>>,
     interner: Interner,
-    arena: Vec<State>,
-    /// Variety history per state, only when the variety term is on.
-    auto: Vec<Autocorrelation>,
+    /// Expanded states, for backtracking.
+    arena: Vec<Trace>,
+    /// States this search has counted against the cap.
+    counted: usize,
     /// States by length, modulo the widest piece: only lengths within one
     /// piece of the current one are ever open, and their tables are reused.
     buckets: Vec<Bucket>,
@@ -198,7 +181,7 @@ impl<'p> Search<'p> {
             compatible,
             interner: Interner::new(n),
             arena: Vec::new(),
-            auto: Vec::new(),
+            counted: 0,
             buckets: (0..ring).map(|_| Bucket::default()).collect(),
             best: None,
         }
@@ -206,10 +189,6 @@ impl<'p> Search<'p> {
 
     fn variety(&self) -> bool {
         self.problem.options.variety > 0.0
-    }
-
-    fn total(&self, state: &State, correlation: &Autocorrelation) -> f64 {
-        if self.variety() { state.cost + self.problem.options.variety * correlation.value() } else { state.cost }
     }
 
     /// Keeps `state` at `length` unless a cheaper one with the same key is
@@ -221,41 +200,40 @@ impl<'p> Search<'p> {
         length: u32,
         state: State,
         penalty_floor: f64,
-        correlation: impl FnOnce(&Self) -> Autocorrelation,
+        correlation: impl FnOnce() -> Autocorrelation,
     ) -> Result<(), SolveError> {
         // Descriptor ids are dense and few: a state's key indexes a table.
         let key = state.descriptor as usize * self.problem.n() + usize::from(state.piece);
         let slot = length as usize % self.buckets.len();
         let variety = self.variety();
-        if let Some(existing) = self.buckets[slot].get(key) {
-            let old = &self.arena[existing as usize];
-            let old_total = if variety { self.total(old, &self.auto[existing as usize]) } else { old.cost };
+        let beta = self.problem.options.variety;
+        let bucket = &mut self.buckets[slot];
+        if let Some(existing) = bucket.get(key) {
+            let old = &bucket.open[existing];
+            let old_total = if variety { old.cost + beta * bucket.auto[existing].value() } else { old.cost };
             if old_total <= state.cost + penalty_floor {
                 return Ok(());
             }
             if variety {
-                let correlation = correlation(self);
-                if self.total(&state, &correlation) < old_total {
-                    self.arena[existing as usize] = state;
-                    self.auto[existing as usize] = correlation;
+                let correlation = correlation();
+                if state.cost + beta * correlation.value() < old_total {
+                    bucket.open[existing] = state;
+                    bucket.auto[existing] = correlation;
                 }
             } else {
-                self.arena[existing as usize] = state;
+                bucket.open[existing] = state;
             }
             return Ok(());
         }
         let problem = self.problem;
         if problem.states.fetch_add(1, Ordering::Relaxed) + 1 > problem.options.max_states {
+            problem.states.fetch_sub(1, Ordering::Relaxed);
             let cap = StateCap { max_states: problem.options.max_states, bytes_per_state: STATE_BYTES };
             return Err(SolveError::TooManyStates { limit: cap.max_states, megabytes: cap.megabytes() });
         }
+        self.counted += 1;
         problem.created.fetch_add(1, Ordering::Relaxed);
-        self.buckets[slot].insert(key, self.arena.len() as u32);
-        self.arena.push(state);
-        if variety {
-            let correlation = correlation(self);
-            self.auto.push(correlation);
-        }
+        self.buckets[slot].insert(key, state, variety.then(correlation));
         Ok(())
     }
 
@@ -268,28 +246,37 @@ impl<'p> Search<'p> {
         }
         for &s in self.starts.iter().filter(|_| first_key == 0) {
             let length = problem.widths[s];
-            let d = problem.clamp(&problem.set.pieces[s].descriptor);
-            if length > max_len || !problem.viable(&d) {
+            let d = problem.options.clamp(&problem.set.pieces[s].descriptor);
+            if length > max_len || !problem.options.viable(&d) {
                 continue;
             }
             let descriptor = self.interner.intern(d);
             let state = State { cost: 0.0, length, parent: NO_PARENT, descriptor, delta: 0.0, piece: s as u16 };
             let key = problem.grid.key(length).max(1);
-            self.add(key, state, 0.0, |_| Autocorrelation::default().push(s, &problem.similarity))?;
+            self.add(key, state, 0.0, || Autocorrelation::default().push(s, &problem.similarity))?;
         }
-        let mut open: Vec<u32> = Vec::new();
+        let (mut open, mut autos): (Vec<State>, Vec<Autocorrelation>) = (Vec::new(), Vec::new());
         for key in first_key..=max_key {
             problem.control.check()?;
             problem.report_progress();
             let slot = key as usize % self.buckets.len();
             open.clear();
-            self.buckets[slot].drain_into(&mut open);
-            for &index in &open {
-                let state = self.arena[index as usize];
+            autos.clear();
+            self.buckets[slot].drain_into(&mut open, &mut autos);
+            if let Some(width) = problem.beam
+                && open.len() > width
+            {
+                self.keep_cheapest(width, &mut open, &mut autos);
+            }
+            for (i, state) in open.iter().enumerate() {
+                let index = self.arena.len() as u32;
+                self.arena.push(Trace { parent: state.parent, delta: state.delta, piece: state.piece });
+                let auto = autos.get(i).copied().unwrap_or_default();
                 let a = state.piece as usize;
                 if state.length >= self.window.0 {
-                    self.consider_end(index);
+                    self.consider_end(state, &auto, index);
                 }
+                let floor = if self.variety() { problem.options.variety * auto.value() } else { 0.0 };
                 for k in 0..self.compatible[a].len() {
                     let b = self.compatible[a][k];
                     let next_length = state.length + problem.widths[b];
@@ -299,23 +286,40 @@ impl<'p> Search<'p> {
                     // Never below the next key, whatever the rounding: the
                     // search runs in order of keys.
                     let next_key = problem.grid.key(next_length).max(key + 1);
-                    let Some(next) = self.follow(&state, index, key, b) else {
+                    let Some(next) = self.follow(state, index, key, b) else {
                         continue;
                     };
-                    let floor =
-                        if self.variety() { problem.options.variety * self.auto[index as usize].value() } else { 0.0 };
-                    self.add(next_key, next, floor, |search| search.auto[index as usize].push(b, &problem.similarity))?;
+                    self.add(next_key, next, floor, || auto.push(b, &problem.similarity))?;
                 }
             }
         }
         Ok(())
     }
 
-    /// Records the state as a finished pattern if it closes and meets the targets.
-    fn consider_end(&mut self, index: u32) {
+    /// Keeps the `width` cheapest of the open states of one length (their
+    /// variety penalty included), dropping the rest: the bounded search.
+    fn keep_cheapest(&mut self, width: usize, open: &mut Vec<State>, autos: &mut Vec<Autocorrelation>) {
+        let beta = self.problem.options.variety;
+        let total = |i: usize| open[i].cost + autos.get(i).map_or(0.0, |a| beta * a.value());
+        let mut order: Vec<usize> = (0..open.len()).collect();
+        order.select_nth_unstable_by(width, |&i, &j| total(i).total_cmp(&total(j)));
+        order.truncate(width);
+        order.sort_unstable();
+        let dropped = open.len() - width;
+        *open = order.iter().map(|&i| open[i]).collect();
+        if !autos.is_empty() {
+            *autos = order.iter().map(|&i| autos[i]).collect();
+        }
+        self.counted -= dropped;
+        self.problem.states.fetch_sub(dropped, Ordering::Relaxed);
+        self.problem.bounded.store(true, Ordering::Relaxed);
+    }
+
+    /// Records the state (traced in the arena at `index`) as a finished
+    /// pattern if it closes and meets the targets.
+    fn consider_end(&mut self, state: &State, auto: &Autocorrelation, index: u32) {
         let problem = self.problem;
         let options = problem.options;
-        let state = &self.arena[index as usize];
         let a = state.piece as usize;
         let target = options.target_length;
         let epsilon = (self.window.1 - target * (1.0 + LENGTH_SLACK)).max(f64::MIN_POSITIVE);
@@ -339,14 +343,14 @@ impl<'p> Search<'p> {
                 total += problem.misalignment_cost(raw);
             }
         }
-        let Some(t) = problem.finished(&self.interner.list[state.descriptor as usize]) else {
+        let Some(t) = problem.options.finished(&self.interner.list[state.descriptor as usize]) else {
             return;
         };
-        if !problem.meets_targets(t) {
+        if !problem.options.meets_targets(t) {
             return;
         }
         if self.variety() {
-            total += options.variety * self.auto[index as usize].value();
+            total += options.variety * auto.value();
         }
         if self.best.is_none_or(|(b, _)| total < b) {
             self.best = Some((total, index));
@@ -391,8 +395,8 @@ impl<'p> Search<'p> {
             return Ok(None);
         }
         let n = problem.n();
-        let d = problem.clamp(&problem.set.pieces[s].descriptor);
-        if !problem.viable(&d) {
+        let d = problem.options.clamp(&problem.set.pieces[s].descriptor);
+        if !problem.options.viable(&d) {
             return Ok(None);
         }
         let mut state = State {
@@ -404,31 +408,26 @@ impl<'p> Search<'p> {
             piece: s as u16,
         };
         let mut correlation = Autocorrelation::default().push(s, &problem.similarity);
-        let (arena_start, auto_start) = (self.arena.len(), self.auto.len());
+        let arena_start = self.arena.len();
         for &b in &prefix[1..] {
             let key = problem.grid.key(state.length).max(1);
             let parent = self.arena.len() as u32;
             let compatible = !problem.cost[usize::from(state.piece) * n + b].is_nan();
             let Some(next) = self.follow(&state, parent, key, b).filter(|_| compatible) else {
                 self.arena.truncate(arena_start);
-                self.auto.truncate(auto_start);
                 return Ok(None);
             };
             // Chain states live in the arena only, for backtracking.
-            self.arena.push(state);
-            if self.variety() {
-                self.auto.push(correlation);
-            }
+            self.arena.push(Trace { parent: state.parent, delta: state.delta, piece: state.piece });
             state = next;
             correlation = correlation.push(b, &problem.similarity);
         }
         if state.length > self.window.1 {
             self.arena.truncate(arena_start);
-            self.auto.truncate(auto_start);
             return Ok(None);
         }
         let key = problem.grid.key(state.length).max(1);
-        self.add(key, state, 0.0, |_| correlation)?;
+        self.add(key, state, 0.0, || correlation)?;
         Ok(Some(key))
     }
 
@@ -472,6 +471,7 @@ const LENGTH_SLACK: f64 = 1e-9;
 pub(super) fn search_all(
     set: &PieceSet,
     options: &SolveOptions,
+    bounded_search: bool,
     control: &Control,
 ) -> Result<Option<Solution>, SolveError> {
     let n = set.len();
@@ -509,6 +509,7 @@ pub(super) fn search_all(
         }
     }
     let states = AtomicUsize::new(0);
+    let bounded = AtomicBool::new(false);
     let created = AtomicUsize::new(0);
     let work_done = AtomicUsize::new(0);
     let tolerances = tolerance_levels(options);
@@ -550,6 +551,8 @@ pub(super) fn search_all(
         jitter,
         reuse,
         similarity: Similarity::new(options.autocorrelation_sigma),
+        beam: None,
+        bounded: &bounded,
         states: &states,
         created: &created,
         work_done: &work_done,
@@ -561,6 +564,16 @@ pub(super) fn search_all(
     let levels = if options.prefix.is_empty() { tolerances.len() } else { 1 };
     for &tolerance in &tolerances[..levels] {
         let window = window_of(tolerance);
+        if bounded_search {
+            // Each search running at once keeps `width` traces per length,
+            // and the children of `width` states wait in the next lengths
+            // (one per following piece, over the lengths a piece spans):
+            // all of it within the cap.
+            let lengths = grid.key(window.1) as usize + 1;
+            let waiting = n * (problem.steps.iter().copied().max().unwrap_or(1) as usize + 2);
+            let running = rayon::current_num_threads().min(runs_per_level).max(1);
+            problem.beam = Some((options.max_states / (running * (lengths + waiting))).max(1));
+        }
         problem.work_total = problem.work_total.max(runs_per_level * (grid.key(window.1) as usize + 1));
         let found = match options.curve {
             CurveKind::Open => {
@@ -583,7 +596,9 @@ pub(super) fn search_all(
         };
         if let Some(found) = found {
             control.report(1.0);
-            return Ok(Some(finish(set, options, found, tolerance, created.load(Ordering::Relaxed))));
+            let mut solution = finish(set, options, found, tolerance, created.load(Ordering::Relaxed));
+            solution.bounded = bounded.load(Ordering::Relaxed).then_some(problem.beam.unwrap_or(0));
+            return Ok(Some(solution));
         }
     }
     Ok(None)
@@ -620,5 +635,6 @@ fn finish(set: &PieceSet, options: &SolveOptions, found: Found, tolerance: f64, 
         holes,
         wraps,
         states: created,
+        bounded: None,
     }
 }

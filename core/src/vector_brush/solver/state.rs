@@ -4,6 +4,7 @@
 use rustc_hash::FxHashMap;
 
 use super::{PieceSet, SolveOptions};
+use crate::vector_brush::Autocorrelation;
 use crate::vector_brush::TopologyDescriptor;
 
 /// Lengths as integer steps of a quantum: the key under which partial
@@ -44,43 +45,64 @@ pub(super) const UNKNOWN: u32 = u32::MAX - 1;
 pub(super) const PRUNED: u32 = u32::MAX;
 pub(super) const NO_PARENT: u32 = u32::MAX;
 
+/// A partial solution waiting in its length bucket to be expanded.
 #[derive(Clone, Copy)]
 pub(super) struct State {
     pub(super) cost: f64,
     /// True length so far, exemplar units.
     pub(super) length: f64,
+    /// The parent's [`Trace`] in the arena.
     pub(super) parent: u32,
     pub(super) descriptor: u32,
     pub(super) delta: f32,
     pub(super) piece: u16,
 }
 
-/// The states of one length, indexed by `descriptor × pieces + piece`.
+/// What an expanded state leaves behind: all backtracking needs. Only the
+/// states of the few open lengths are held whole (with their variety
+/// history), so memory grows by 12 bytes per state, not by a whole state.
+#[derive(Clone, Copy)]
+pub(super) struct Trace {
+    pub(super) parent: u32,
+    pub(super) delta: f32,
+    pub(super) piece: u16,
+}
+
+/// The open states of one length, found by `descriptor × pieces + piece`.
 #[derive(Default)]
 pub(super) struct Bucket {
-    pub(super) slots: Vec<u32>,
-    /// Occupied slots, in insertion order (which is also the expansion order).
-    pub(super) occupied: Vec<u32>,
+    /// Index into `open` per key, [`NO_PARENT`] where empty.
+    slots: Vec<u32>,
+    /// The keys of `open`, in the same order, to clear `slots` after.
+    keys: Vec<u32>,
+    /// The states, in insertion order (which is also the expansion order).
+    pub(super) open: Vec<State>,
+    /// Their variety histories, only when the variety term is on.
+    pub(super) auto: Vec<Autocorrelation>,
 }
 
 impl Bucket {
-    pub(super) fn get(&self, key: usize) -> Option<u32> {
-        self.slots.get(key).copied().filter(|&i| i != NO_PARENT)
+    pub(super) fn get(&self, key: usize) -> Option<usize> {
+        self.slots.get(key).copied().filter(|&i| i != NO_PARENT).map(|i| i as usize)
     }
 
-    pub(super) fn insert(&mut self, key: usize, index: u32) {
+    pub(super) fn insert(&mut self, key: usize, state: State, auto: Option<Autocorrelation>) {
         if key >= self.slots.len() {
             self.slots.resize((key + 1).next_power_of_two(), NO_PARENT);
         }
-        self.slots[key] = index;
-        self.occupied.push(key as u32);
+        self.slots[key] = self.open.len() as u32;
+        self.keys.push(key as u32);
+        self.open.push(state);
+        self.auto.extend(auto);
     }
 
-    /// Moves the state indices out, leaving the bucket empty for reuse.
-    pub(super) fn drain_into(&mut self, out: &mut Vec<u32>) {
-        for key in self.occupied.drain(..) {
-            out.push(std::mem::replace(&mut self.slots[key as usize], NO_PARENT));
+    /// Moves the states out, leaving the bucket empty for reuse.
+    pub(super) fn drain_into(&mut self, states: &mut Vec<State>, autos: &mut Vec<Autocorrelation>) {
+        for key in self.keys.drain(..) {
+            self.slots[key as usize] = NO_PARENT;
         }
+        states.append(&mut self.open);
+        autos.append(&mut self.auto);
     }
 }
 
