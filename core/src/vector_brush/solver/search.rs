@@ -6,6 +6,8 @@ use std::sync::atomic::{AtomicBool, AtomicUsize, Ordering};
 
 use rayon::prelude::*;
 
+mod narrowing;
+
 use super::state::{Bucket, Interner, LengthGrid, NO_PARENT, PRUNED, State, Trace, UNKNOWN};
 use super::{BAND_MARGIN, CurveKind, STATE_BYTES, Solution, SolveOptions, tolerance_levels};
 use crate::control::{Control, StateCap};
@@ -296,25 +298,6 @@ impl<'p> Search<'p> {
         Ok(())
     }
 
-    /// Keeps the `width` cheapest of the open states of one length (their
-    /// variety penalty included), dropping the rest: the bounded search.
-    fn keep_cheapest(&mut self, width: usize, open: &mut Vec<State>, autos: &mut Vec<Autocorrelation>) {
-        let beta = self.problem.options.variety;
-        let total = |i: usize| open[i].cost + autos.get(i).map_or(0.0, |a| beta * a.value());
-        let mut order: Vec<usize> = (0..open.len()).collect();
-        order.select_nth_unstable_by(width, |&i, &j| total(i).total_cmp(&total(j)));
-        order.truncate(width);
-        order.sort_unstable();
-        let dropped = open.len() - width;
-        *open = order.iter().map(|&i| open[i]).collect();
-        if !autos.is_empty() {
-            *autos = order.iter().map(|&i| autos[i]).collect();
-        }
-        self.counted -= dropped;
-        self.problem.states.fetch_sub(dropped, Ordering::Relaxed);
-        self.problem.bounded.store(true, Ordering::Relaxed);
-    }
-
     /// Records the state (traced in the arena at `index`) as a finished
     /// pattern if it closes and meets the targets.
     fn consider_end(&mut self, state: &State, auto: &Autocorrelation, index: u32) {
@@ -378,57 +361,6 @@ impl<'p> Search<'p> {
             delta,
             piece: b as u16,
         })
-    }
-
-    /// Lays the fixed beginning (`SolveOptions::prefix`, open curves) as a
-    /// chain of states, the search growing only from its last one. Returns
-    /// that state's key, or `None` when there is no prefix or it cannot be
-    /// laid (the search then starts from scratch).
-    fn seed_prefix(&mut self) -> Result<Option<u32>, SolveError> {
-        let problem = self.problem;
-        let prefix = &problem.options.prefix;
-        if prefix.is_empty() || problem.options.curve != CurveKind::Open || prefix.iter().any(|&p| p >= problem.n()) {
-            return Ok(None);
-        }
-        let s = prefix[0];
-        if !problem.set.pieces[s].left.is_empty() {
-            return Ok(None);
-        }
-        let n = problem.n();
-        let d = problem.options.clamp(&problem.set.pieces[s].descriptor);
-        if !problem.options.viable(&d) {
-            return Ok(None);
-        }
-        let mut state = State {
-            cost: 0.0,
-            length: problem.widths[s],
-            parent: NO_PARENT,
-            descriptor: self.interner.intern(d),
-            delta: 0.0,
-            piece: s as u16,
-        };
-        let mut correlation = Autocorrelation::default().push(s, &problem.similarity);
-        let arena_start = self.arena.len();
-        for &b in &prefix[1..] {
-            let key = problem.grid.key(state.length).max(1);
-            let parent = self.arena.len() as u32;
-            let compatible = !problem.cost[usize::from(state.piece) * n + b].is_nan();
-            let Some(next) = self.follow(&state, parent, key, b).filter(|_| compatible) else {
-                self.arena.truncate(arena_start);
-                return Ok(None);
-            };
-            // Chain states live in the arena only, for backtracking.
-            self.arena.push(Trace { parent: state.parent, delta: state.delta, piece: state.piece });
-            state = next;
-            correlation = correlation.push(b, &problem.similarity);
-        }
-        if state.length > self.window.1 {
-            self.arena.truncate(arena_start);
-            return Ok(None);
-        }
-        let key = problem.grid.key(state.length).max(1);
-        self.add(key, state, 0.0, || correlation)?;
-        Ok(Some(key))
     }
 
     fn backtrack(&self, end: u32, total: f64) -> Found {
