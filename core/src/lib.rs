@@ -19,6 +19,8 @@
 //!
 //! - [`vector_brush`]: topology-constrained synthesis of vector patterns
 //!   along curves, from an SVG exemplar to a printable mesh.
+//! - [`raster_brush`]: bitmap exemplars synthesized along curves without
+//!   distortion, traced into printable outlines.
 //!
 //! Geometry uses `u` along the pattern and `v` across it, up (band space);
 //! the plane is in millimetres, `y` up.
@@ -32,6 +34,7 @@ pub mod mesh;
 pub mod print;
 pub mod product;
 pub mod quality;
+pub mod raster_brush;
 pub mod report;
 pub mod vector_brush;
 

@@ -35,6 +35,60 @@ pub struct RasterImage {
     pub mm_per_px: f64,
 }
 
+/// A picture used as a texture, shared without copying (an exemplar).
+///
+/// ```
+/// use tracery_core::product::Texture;
+/// let t = Texture::new(1, 1, vec![255, 0, 0, 255]).unwrap();
+/// assert_eq!(t.pixel(0, 0), [255, 0, 0, 255]);
+/// assert_eq!(t.pixel(5, -1), [0, 0, 0, 0]);
+/// ```
+#[derive(Clone, Debug, PartialEq)]
+pub struct Texture {
+    /// Width, pixels.
+    pub width_px: u32,
+    /// Height, pixels.
+    pub height_px: u32,
+    /// Rows top to bottom, 4 bytes a pixel, not premultiplied.
+    pub rgba: std::sync::Arc<[u8]>,
+}
+
+impl Texture {
+    /// A texture of `width_px × height_px` pixels, or `None` when `rgba` has
+    /// not 4 bytes for each of them.
+    pub fn new(width_px: u32, height_px: u32, rgba: Vec<u8>) -> Option<Texture> {
+        (rgba.len() == 4 * width_px as usize * height_px as usize).then(|| Texture {
+            width_px,
+            height_px,
+            rgba: rgba.into(),
+        })
+    }
+
+    /// The pixel at column `x`, row `y`; transparent outside the picture.
+    pub fn pixel(&self, x: i64, y: i64) -> [u8; 4] {
+        if x < 0 || y < 0 || x >= self.width_px as i64 || y >= self.height_px as i64 {
+            return [0; 4];
+        }
+        let i = 4 * (y as usize * self.width_px as usize + x as usize);
+        [self.rgba[i], self.rgba[i + 1], self.rgba[i + 2], self.rgba[i + 3]]
+    }
+}
+
+/// Triangles in the plane that show parts of a [`Texture`] (the raster
+/// brush's pieces): drawn as they are by the canvas, rendered to PNG by
+/// [`crate::export::render_textured`].
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct TexturedMesh {
+    /// The picture the triangles show.
+    pub texture: Option<Texture>,
+    /// Vertex positions, mm, `y` up.
+    pub positions_mm: Vec<DVec2>,
+    /// Vertex texture coordinates, texture pixels (`x` right, `y` down).
+    pub uvs_px: Vec<DVec2>,
+    /// Triangles, as indices into the vertices.
+    pub triangles: Vec<[u32; 3]>,
+}
+
 /// Drawn over the result to explain it; never exported.
 #[derive(Clone, Debug, Default, PartialEq)]
 pub struct Overlays {
@@ -42,6 +96,9 @@ pub struct Overlays {
     pub band_edges_mm: Vec<Vec<DVec2>>,
     /// Seams between pieces, as short segments across the band, mm.
     pub seams_mm: Vec<[DVec2; 2]>,
+    /// Areas the pattern had to leave empty (fold-overs of the band, avoided
+    /// areas), mm.
+    pub avoided_mm: Region,
 }
 
 /// A figure about a result, for reports (named in [`Facts`]).
@@ -112,6 +169,8 @@ pub struct Product {
     pub mesh_mm: Option<Mesh>,
     /// A picture laid in the plane.
     pub image: Option<RasterImage>,
+    /// Textured triangles in the plane (the raster brush's result as drawn).
+    pub textured_mm: Option<TexturedMesh>,
     /// Where an open pattern starts and ends: each end's point and the
     /// direction pointing away from the pattern, mm (empty on loops).
     pub path_ends_mm: Vec<[DVec2; 2]>,

@@ -33,11 +33,11 @@ pub enum Along {
 pub enum AlongError {
     /// Not `KIND:VALUE`.
     #[error(
-        "curve '{0}' must look like KIND:VALUE (line:120, circle:25, wave:120, square:60, hexagon:30, star:40, rect:80x50 or svg:FILE.svg)"
+        "curve '{0}' must look like KIND:VALUE (line:120, circle:25, wave:120, square:60, hexagon:30, star:40, heart:60, rect:80x50 or svg:FILE.svg)"
     )]
     Form(String),
     /// An unknown kind.
-    #[error("unknown curve kind '{0}': use line, circle, wave, square, hexagon, star, rect or svg")]
+    #[error("unknown curve kind '{0}': use line, circle, wave, square, hexagon, star, heart, rect or svg")]
     Kind(String),
     /// A size that is not a positive number.
     #[error("{what} must be a positive number of millimetres, not '{text}'")]
@@ -102,6 +102,7 @@ impl Along {
             }
             "hexagon" => Curve::regular_polygon(6, positive("the hexagon's radius", value)?)?,
             "star" => Curve::star(5, positive("the star's radius", value)?)?,
+            "heart" => Curve::heart(positive("the heart's width", value)?)?,
             "rect" => {
                 let (w, h) = value.split_once(['x', 'X']).ok_or_else(|| AlongError::Rectangle(value.to_string()))?;
                 return Ok(Along::Rectangle {

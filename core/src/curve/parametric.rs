@@ -137,6 +137,28 @@ impl Curve {
         Curve::from_polyline(&pts, true)
     }
 
+    /// A heart `width` wide around the origin, counter-clockwise, with its
+    /// point at the bottom and its dip at the top (both sharp).
+    ///
+    /// ```
+    /// use tracery_core::curve::Curve;
+    /// let heart = Curve::heart(60.0).unwrap();
+    /// assert!(heart.is_closed() && heart.length() > 150.0);
+    /// ```
+    pub fn heart(width: f64) -> Result<Curve, CurveError> {
+        let n = 720;
+        let scale = width / 32.0;
+        let pts: Vec<DVec2> = (0..n)
+            .map(|i| {
+                let t = -std::f64::consts::TAU * i as f64 / n as f64;
+                let x = 16.0 * t.sin().powi(3);
+                let y = 13.0 * t.cos() - 5.0 * (2.0 * t).cos() - 2.0 * (3.0 * t).cos() - (4.0 * t).cos();
+                DVec2::new(x, y) * scale
+            })
+            .collect();
+        Curve::from_polyline(&pts, true)
+    }
+
     /// A smooth S curve of arc length `length`: one period of a sine whose
     /// amplitude is an eighth of its span.
     pub fn wave(length: f64) -> Result<Curve, CurveError> {

@@ -1,10 +1,12 @@
 //! File writers: SVG for regions (filled or laser cut paths), binary STL and
-//! 3MF for meshes.
+//! 3MF for meshes, and renders to PNG.
 
+mod raster;
 mod stl;
 mod svg;
 mod threemf;
 
+pub use raster::{MAX_RENDER_PX, RenderError, encode_png, render_product, render_textured};
 pub use stl::write_stl;
 pub use svg::{CUT_COLOUR, HAIRLINE_MM, SvgFlavour, SvgOptions, region_to_svg, write_svg};
 pub use threemf::{OBJECT_COLOURS, ThreeMfObject, object_colour, write_3mf};

@@ -14,6 +14,7 @@ mod resolution;
 mod sanity;
 mod segment;
 mod topology;
+mod trace;
 
 pub use boolean::{FillRule, clip_to_rect, difference, resolve_contours, union};
 pub use disc::{arc_step, disc};
@@ -26,3 +27,4 @@ pub use resolution::{mean_width, without_slivers};
 pub use sanity::{MIN_RING_AREA, RegionDefect};
 pub use segment::closest_on_segment;
 pub use topology::{PatternTopology, Topology, count_topology};
+pub use trace::{MIN_RING_PX, OPAQUE_ALPHA, PixelFrame, join_corners, trace_opaque};

@@ -164,6 +164,7 @@ pub(crate) fn to_product(
         path_ends_mm,
         mesh_mm: mesh,
         image: None,
+        textured_mm: None,
         overlays,
         topology,
         warnings,

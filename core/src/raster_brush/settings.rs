@@ -1,0 +1,69 @@
+//! [`Settings`]: everything a person chooses for the raster brush, declared
+//! once for the document, the command line and the app.
+
+use serde::{Deserialize, Serialize};
+
+/// The raster brush's settings, with the one set of defaults
+/// (`docs/raster-brush.md` explains them).
+///
+/// ```
+/// use tracery_core::raster_brush::Settings;
+/// let mut settings = Settings::default();
+/// assert!(settings.validate().is_ok());
+/// settings.step_mm = 0.0;
+/// assert!(settings.validate().is_err());
+/// ```
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(default)]
+#[non_exhaustive]
+pub struct Settings {
+    /// Width of the ribbon across the curve (the paper's b), mm.
+    pub band_mm: f64,
+    /// Length of a piece along the curve (the paper's δ), mm.
+    pub step_mm: f64,
+    /// The pattern's height (its opaque rows) as a fraction of the band
+    /// (the paper's s); what is left lets the pattern wander across the band.
+    pub scale: f64,
+    /// Deform the pieces so that their seams meet (the paper's stitching).
+    pub stitching: bool,
+    /// Printed thickness of the traced outline, mm.
+    pub thickness_mm: f64,
+}
+
+impl Default for Settings {
+    fn default() -> Self {
+        Settings { band_mm: 10.0, step_mm: 2.0, scale: 0.75, stitching: true, thickness_mm: 2.0 }
+    }
+}
+
+/// A setting out of range, in words a person understands.
+#[derive(Clone, Debug, PartialEq, thiserror::Error)]
+#[error("{0}")]
+pub struct InvalidSetting(pub String);
+
+/// The largest scale: above it the band is narrower than the pattern, and
+/// no piece could slice it without cutting through it.
+pub const MAX_SCALE: f64 = 1.0;
+
+impl Settings {
+    /// Checks every number is in range.
+    pub fn validate(&self) -> Result<(), InvalidSetting> {
+        let positive = |what: &str, x: f64| {
+            if x.is_finite() && x > 0.0 {
+                Ok(())
+            } else {
+                Err(InvalidSetting(format!("{what} must be a positive number of millimetres, not {x}")))
+            }
+        };
+        positive("the band", self.band_mm)?;
+        positive("the step", self.step_mm)?;
+        positive("the thickness", self.thickness_mm)?;
+        if !(self.scale.is_finite() && self.scale > 0.0 && self.scale <= MAX_SCALE) {
+            return Err(InvalidSetting(format!(
+                "the scale (the pattern's height as a fraction of the band) must be above 0 and at most {MAX_SCALE}, not {}",
+                self.scale
+            )));
+        }
+        Ok(())
+    }
+}
