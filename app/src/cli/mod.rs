@@ -3,6 +3,7 @@
 //! stderr and leaves no partial file.
 
 mod output;
+mod raster;
 mod synth;
 
 use anyhow::{Context, Result};
@@ -10,6 +11,7 @@ use clap::{Parser, Subcommand};
 use tracery_core::vector_brush::{BUILTIN_NAMES, PieceSet, SliceOptions, builtin};
 
 pub use output::{OutputArgs, Report};
+pub use raster::RasterArgs;
 pub use synth::SynthArgs;
 
 /// Tracery: synthesize printable patterns. Without a command, opens the app.
@@ -30,9 +32,23 @@ impl Cli {
 #[derive(Subcommand, Debug)]
 enum Command {
     /// Print the built-in exemplars.
-    List,
+    List {
+        /// The raster brush's exemplars instead of the vector brush's.
+        #[arg(long)]
+        raster: bool,
+    },
     /// Vector brush: synthesize a pattern along a curve and write STL, SVG and a report.
     Synth(Box<SynthArgs>),
+    /// Raster brush: synthesize a bitmap pattern along a curve and write PNG, STL, SVG and a report.
+    Raster(Box<RasterArgs>),
+}
+
+fn list_raster() -> Result<()> {
+    for name in tracery_core::raster_brush::BUILTIN_NAMES {
+        let e = tracery_core::raster_brush::builtin(name).with_context(|| format!("painting built-in '{name}'"))?;
+        println!("{name:10} {:4} x {:3} px {:3.0}% opaque", e.width(), e.height(), 100.0 * e.coverage());
+    }
+    Ok(())
 }
 
 fn list() -> Result<()> {
@@ -53,8 +69,10 @@ fn list() -> Result<()> {
 /// Runs the command line.
 pub fn run(cli: Cli) -> Result<()> {
     match cli.command {
-        Some(Command::List) => list(),
+        Some(Command::List { raster: false }) => list(),
+        Some(Command::List { raster: true }) => list_raster(),
         Some(Command::Synth(args)) => synth::run(*args),
+        Some(Command::Raster(args)) => raster::run(*args),
         None => Ok(()),
     }
 }

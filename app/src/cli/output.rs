@@ -6,12 +6,20 @@ use std::path::PathBuf;
 use anyhow::{Result, bail};
 use serde::Serialize;
 use tracery_core::Product;
-use tracery_core::export::{SvgFlavour, SvgOptions, ThreeMfObject, object_colour, write_3mf, write_stl, write_svg};
+use tracery_core::export::{
+    SvgFlavour, SvgOptions, ThreeMfObject, encode_png, object_colour, render_product, write_3mf, write_stl, write_svg,
+};
 use tracery_core::print::{JumpRings, PrintSettings, Printability, RingAt};
 use tracery_core::product::Facts;
 use tracery_core::report::{Timings, Warning};
 
 use crate::files::write_atomically;
+
+/// PNG resolution when `--dpi` is left out.
+const DEFAULT_DPI: f64 = 300.0;
+
+/// Millimetres in an inch.
+const MM_PER_INCH: f64 = 25.4;
 
 /// The flags every subcommand takes.
 #[derive(clap::Args, Debug, Clone, PartialEq)]
@@ -28,6 +36,12 @@ pub struct OutputArgs {
     /// SVG output (millimetres).
     #[arg(long)]
     pub svg: Option<PathBuf>,
+    /// PNG picture of the result (transparent background).
+    #[arg(long)]
+    pub png: Option<PathBuf>,
+    /// Resolution of the PNG, dots per inch [default: 300].
+    #[arg(long)]
+    pub dpi: Option<f64>,
     /// What the SVG is for: "engrave" (filled shapes) or "cut" (hairline outlines for a laser, holes first) [default: engrave].
     #[arg(long, value_parser = parse_flavour)]
     pub svg_flavour: Option<SvgFlavour>,
@@ -178,6 +192,16 @@ pub fn write_outputs(mode: &'static str, exemplar: &str, args: &OutputArgs, prod
             ThreeMfObject { name: format!("{exemplar} along {}", args.along), colour_rgb: object_colour(0), mesh };
         write_3mf(&[object], &mut three_mf)?;
     }
+    let png = match &args.png {
+        Some(_) => {
+            let dpi = args.dpi.unwrap_or(DEFAULT_DPI);
+            if !(dpi.is_finite() && (1.0..=4800.0).contains(&dpi)) {
+                bail!("--dpi must be between 1 and 4800, not {dpi}");
+            }
+            Some(encode_png(&render_product(product, dpi / MM_PER_INCH)?)?)
+        }
+        None => None,
+    };
     let svg_options = args.svg_options()?;
     // A cut SVG unites and offsets the region: only when it is asked for.
     let svg = args.svg.as_ref().map(|_| write_svg(&product.region_mm, &svg_options));
@@ -202,6 +226,9 @@ pub fn write_outputs(mode: &'static str, exemplar: &str, args: &OutputArgs, prod
     }
     if let Some(path) = &args.three_mf {
         write_atomically(path, three_mf.get_ref())?;
+    }
+    if let (Some(path), Some(png)) = (&args.png, &png) {
+        write_atomically(path, png)?;
     }
     if let (Some(path), Some(svg)) = (&args.svg, &svg) {
         write_atomically(path, svg.as_bytes())?;
