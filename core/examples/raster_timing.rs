@@ -18,8 +18,9 @@ fn main() {
             let along = Along::parse(spec).expect("curve");
             let mut runs: Vec<(f64, f64, f64, usize)> = (0..3)
                 .map(|_| {
-                    let p = make_product(&exemplar, &along, &Settings::default(), &Region::default(), &Control::default())
-                        .expect("synthesis");
+                    let p =
+                        make_product(&exemplar, &along, &Settings::default(), &Region::default(), &Control::default())
+                            .expect("synthesis");
                     let t = &p.timings;
                     (
                         t.stage_ms("per_piece").unwrap_or(0.0),
