@@ -333,6 +333,24 @@ impl Curve {
         self.tangents[k].lerp(self.tangents[k + 1], t).normalize_or(self.tangents[k])
     }
 
+    /// Where an open curve starts and ends: each end's point and the direction
+    /// pointing away from the curve (empty on loops).
+    ///
+    /// ```
+    /// use tracery_core::curve::Curve;
+    /// let ends = Curve::line(10.0).unwrap().path_ends();
+    /// assert_eq!(ends[1][0].x, 10.0);
+    /// assert_eq!(ends[0][1].x, -1.0);
+    /// assert!(Curve::circle(5.0).unwrap().path_ends().is_empty());
+    /// ```
+    pub fn path_ends(&self) -> Vec<[DVec2; 2]> {
+        if self.closed {
+            return Vec::new();
+        }
+        let end = self.length();
+        vec![[self.point(0.0), -self.tangent(0.0)], [self.point(end), self.tangent(end)]]
+    }
+
     /// The unit left normal at arc length `u`.
     pub fn normal(&self, u: f64) -> DVec2 {
         self.tangent(u).perp()

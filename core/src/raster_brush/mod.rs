@@ -31,11 +31,11 @@ mod textured_mesh;
 pub use builtin::{BUILTIN_NAMES, builtin};
 pub use error::{ExemplarError, RasterError};
 pub use exemplar::{MAX_HEIGHT_PX, MAX_WIDTH_PX, MIN_SIDE_PX, OPAQUE_FROM, RasterExemplar};
-pub use pipeline::{RasterSynthesis, make_product, synthesize, traced_region};
+pub use pipeline::{RasterSynthesis, TRACE_OVERSAMPLING, make_product, synthesize, traced_region};
 pub use placement::{PieceSamples, Placements, Position, valid_positions};
 pub use ribbon::{MAX_CELLS, Ribbon, RibbonPiece, lay_ribbon};
 pub use search::{
-    Closure, EdgeTable, GAMMA, JUMP_COST, MAX_FIXED_STARTS, Path, edge_cost, is_continuation, seam_cost, search,
+    Closure, EdgeTable, GAMMA, JUMP_COST, MAX_FIXED_STARTS, Path, edge_cost, is_continuation, pixel_cost, search,
 };
 pub use settings::{InvalidSetting, MAX_SCALE, Settings};
 pub use stitch::{STRETCH_PENALTY, SeamMap, align_seam};

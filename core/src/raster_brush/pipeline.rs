@@ -16,12 +16,12 @@ use crate::curve::{Along, Curve, planar_topology};
 use crate::export::{MAX_RENDER_PX, render_textured};
 use crate::geom::{PixelFrame, Region, trace_opaque};
 use crate::mesh::extrude;
-use crate::product::{Fact, Facts, Overlays};
+use crate::product::{Fact, Facts, Overlays, TexturedMesh};
 use crate::report::Timings;
 
 /// The traced outline is taken from a render this many times finer than the
 /// exemplar's pixels, so that its curves are smooth.
-const TRACE_OVERSAMPLING: f64 = 2.0;
+pub const TRACE_OVERSAMPLING: f64 = 2.0;
 
 /// Everything the synthesis decided, stage by stage.
 #[derive(Clone, Debug)]
@@ -86,20 +86,16 @@ pub fn synthesize(
     Ok(RasterSynthesis { ribbon, samples, placements, path, seams, timings })
 }
 
-/// The opaque parts of a synthesis, traced into a region (mm).
-pub fn traced_region(
-    exemplar: &RasterExemplar,
-    synthesis: &RasterSynthesis,
-    stitched: bool,
-) -> Result<Region, RasterError> {
-    let mesh = textured_mesh(exemplar, synthesis, stitched);
+/// The opaque parts of textured triangles, traced into a region (mm) from a
+/// render at [`TRACE_OVERSAMPLING`] times `px_per_mm` (the exemplar's pixels).
+pub fn traced_region(mesh: &TexturedMesh, px_per_mm: f64) -> Result<Region, RasterError> {
     let bounds = crate::geom::Rect::from_points(mesh.positions_mm.iter().copied());
     let area = bounds.map_or(0.0, |b| b.width() * b.height());
-    let mut px_per_mm = TRACE_OVERSAMPLING * synthesis.ribbon.px_per_mm;
+    let mut px_per_mm = TRACE_OVERSAMPLING * px_per_mm;
     if area * px_per_mm * px_per_mm > MAX_RENDER_PX as f64 {
         px_per_mm = (MAX_RENDER_PX as f64 / area).sqrt() * 0.99;
     }
-    let image = render_textured(&mesh, px_per_mm)?;
+    let image = render_textured(mesh, px_per_mm)?;
     let alpha: Vec<u8> = image.rgba.chunks_exact(4).map(|p| p[3]).collect();
     let frame = PixelFrame {
         width_px: image.width_px as usize,
@@ -137,7 +133,7 @@ pub fn make_product(
     let mut timings = synthesis.timings.clone();
     let textured = timings.time("textured mesh", || textured_mesh(exemplar, &synthesis, settings.stitching));
     control.check()?;
-    let region = timings.time("trace", || traced_region(exemplar, &synthesis, settings.stitching))?;
+    let region = timings.time("trace", || traced_region(&textured, synthesis.ribbon.px_per_mm))?;
     control.check()?;
     let topology = planar_topology(&region, curve);
     let mesh = timings.time("mesh", || extrude(&region, settings.thickness_mm))?;
@@ -150,11 +146,6 @@ pub fn make_product(
     };
     overlays.band_edges_mm = vec![corner(0), corner(3)];
     overlays.seams_mm = ribbon.pieces.iter().skip(1).map(|p| [p.corners_mm[0], p.corners_mm[3]]).collect();
-    let mut path_ends_mm = Vec::new();
-    if !curve.is_closed() {
-        let end = curve.length();
-        path_ends_mm = vec![[curve.point(0.0), -curve.tangent(0.0)], [curve.point(end), curve.tangent(end)]];
-    }
     let (valid, tried) =
         synthesis.placements.iter().fold((0, 0), |(v, t), p| (v + p.positions.len(), t + p.candidates));
     let (before, after) = synthesis
@@ -185,7 +176,7 @@ pub fn make_product(
         region_mm: region,
         mesh_mm: Some(mesh),
         textured_mm: Some(textured),
-        path_ends_mm,
+        path_ends_mm: curve.path_ends(),
         overlays,
         topology,
         timings,

@@ -18,8 +18,6 @@ pub struct PieceSamples {
     /// The right edge's samples, top to bottom, one per row of the left
     /// edge (the paper's R̄); the left edge's are `(0, k)` (L̄).
     pub right: Vec<(i32, i32)>,
-    /// Pixels along the top and bottom edges, inside the piece.
-    pub rims: Vec<(i32, i32)>,
     /// Columns the piece spans, relative to its left edge.
     pub columns: (i32, i32),
     /// For each column the top and bottom edges cross (relative to the left
@@ -39,7 +37,6 @@ impl PieceSamples {
                 (q.x.round() as i32, q.y.floor() as i32)
             })
             .collect();
-        let mut rims = Vec::new();
         let mut spans: std::collections::BTreeMap<i32, (i32, i32)> = std::collections::BTreeMap::new();
         let bottom_left = DVec2::new(0.0, c);
         for (from, to, inward) in [(DVec2::ZERO, rt, 0.5), (bottom_left, rb, -0.5)] {
@@ -47,7 +44,6 @@ impl PieceSamples {
             for j in 0..steps {
                 let p = from + (to - from) * (j as f64 / steps as f64);
                 let pixel = (p.x.floor() as i32, (p.y + inward).floor() as i32);
-                rims.push(pixel);
                 let span = spans.entry(pixel.0).or_insert((i32::MIN, i32::MAX));
                 if inward > 0.0 {
                     span.0 = span.0.max(pixel.1);
@@ -56,13 +52,11 @@ impl PieceSamples {
                 }
             }
         }
-        rims.sort_unstable();
-        rims.dedup();
+        let xs = right.iter().map(|r| r.0).chain(spans.keys().copied()).chain([0]);
+        let columns = (xs.clone().min().unwrap_or(0), xs.max().unwrap_or(0));
         // Columns crossed by one edge only (a steep tilt) bound nothing on the other side.
         let spans = spans.into_iter().map(|(dx, (top, bottom))| (dx, top, bottom)).collect();
-        let xs = right.iter().map(|r| r.0).chain(rims.iter().map(|r| r.0)).chain([0]);
-        let columns = (xs.clone().min().unwrap_or(0), xs.max().unwrap_or(0));
-        PieceSamples { right, rims, columns, spans, right_top: (rt.x.round() as i32, rt.y.round() as i32) }
+        PieceSamples { right, columns, spans, right_top: (rt.x.round() as i32, rt.y.round() as i32) }
     }
 }
 
@@ -111,8 +105,10 @@ pub fn valid_positions(
                     .flatten()
                     .is_none_or(|(et, eb)| et > y.saturating_add(t) && eb < y.saturating_add(b))
             });
+            // Every pixel of the top and bottom edges lies in a span's
+            // column at or beyond its row, so `slices` also keeps them clear.
             let clear = |&(dx, dy): &(i32, i32)| !exemplar.is_opaque(i64::from(x + dx), i64::from(y + dy));
-            if slices && samples.rims.iter().all(clear) && avoided_px.iter().all(clear) {
+            if slices && avoided_px.iter().all(clear) {
                 positions.push((x, y));
             }
         }

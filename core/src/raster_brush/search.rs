@@ -85,6 +85,17 @@ impl EdgeTable {
     }
 }
 
+/// The pixel cost ξ of two samples (opacity, colour): γ where opacity
+/// differs, the RGB distance between two opaque ones, 0 between two
+/// transparent ones.
+pub fn pixel_cost(a: (bool, [u8; 3]), b: (bool, [u8; 3])) -> f32 {
+    match (a.0, b.0) {
+        (true, true) => rgb_distance(a.1, b.1),
+        (false, false) => 0.0,
+        _ => GAMMA,
+    }
+}
+
 fn rgb_distance(a: [u8; 3], b: [u8; 3]) -> f32 {
     let d = |k: usize| f32::from(a[k]) - f32::from(b[k]);
     (d(0) * d(0) + d(1) * d(1) + d(2) * d(2)).sqrt()
@@ -226,13 +237,6 @@ struct Row<'a> {
     prev_positions: &'a [Position],
     positions: &'a [Position],
     step: (i32, i32),
-}
-
-/// The cost of a seam between two pieces at `v` and `u` (the pieces'
-/// samples and edges given): D, plus [`JUMP_COST`] unless `u` continues `v`.
-/// What the search minimizes, summed over seams.
-pub fn seam_cost(right: &EdgeTable, v: usize, left: &EdgeTable, u: usize, jump: bool) -> f64 {
-    f64::from(edge_cost(right, v, left, u, f32::INFINITY)) + if jump { JUMP_COST } else { 0.0 }
 }
 
 /// Whether a piece at `u` continues the exemplar from the previous piece at

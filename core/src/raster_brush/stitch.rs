@@ -8,7 +8,7 @@
 //! the paper's plain RGB distance, since the colour of a transparent pixel
 //! is not seen: opaque strokes are lined up with opaque strokes first.
 
-use super::search::{EdgeTable, GAMMA};
+use super::search::{EdgeTable, pixel_cost as xi};
 
 /// The cost of a step that stretches or squeezes opaque pixels (the paper's P).
 pub const STRETCH_PENALTY: f32 = 32.0;
@@ -27,17 +27,6 @@ pub struct SeamMap {
     pub before: f32,
     /// Σ ξ along the seam with it.
     pub after: f32,
-}
-
-fn xi(a: (bool, [u8; 3]), b: (bool, [u8; 3])) -> f32 {
-    match (a.0, b.0) {
-        (true, true) => {
-            let d = |k: usize| f32::from(a.1[k]) - f32::from(b.1[k]);
-            (d(0) * d(0) + d(1) * d(1) + d(2) * d(2)).sqrt()
-        }
-        (false, false) => 0.0,
-        _ => GAMMA,
-    }
 }
 
 /// Aligns right edge `v` of `right` with left edge `u` of `left` (equation 2).

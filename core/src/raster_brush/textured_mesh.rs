@@ -40,7 +40,7 @@ pub fn textured_mesh(exemplar: &RasterExemplar, synthesis: &RasterSynthesis, sti
             // The same expressions on both sides of a seam, so that
             // neighbouring pieces share their edge's points exactly.
             let (left_mm, right_mm) = (tl * (1.0 - b) + bl * b, tr * (1.0 - b) + br * b);
-            let right_uv = rt * (1.0 - b) + DVec2::new(rb.x, rb.y) * b;
+            let right_uv = rt * (1.0 - b) + rb * b;
             let left_uv = DVec2::new(0.0, c * b);
             let delta = (rb - rt) / c * shift(b);
             for k in 0..=columns {

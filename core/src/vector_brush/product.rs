@@ -126,10 +126,7 @@ pub(crate) fn to_product(
                 (0..=steps).map(|k| curve.map(curve.length() * k as f64 / steps as f64, side * half)).collect()
             };
             overlays.band_edges_mm = vec![edge(1.0), edge(-1.0)];
-            if !curve.is_closed() {
-                let end = curve.length();
-                path_ends_mm = vec![[curve.point(0.0), -curve.tangent(0.0)], [curve.point(end), curve.tangent(end)]];
-            }
+            path_ends_mm = curve.path_ends();
             overlays.seams_mm = band
                 .seams
                 .iter()
