@@ -1,64 +1,21 @@
 //! The desktop app, driven like a person would: with egui_kittest.
 
-use std::path::PathBuf;
-
 use egui::accesskit::Role;
-use egui::{Event, Key, Modifiers, PointerButton, Pos2};
-use egui_kittest::Harness;
+use egui::{Key, Modifiers, Pos2};
 use egui_kittest::kittest::Queryable;
-use tracery::TraceryApp;
-use tracery::dialogs::{FileKind, ScriptedDialogs};
+use tracery::dialogs::FileKind;
 use tracery::worker::JobState;
 
+#[path = "common/drive.rs"]
+mod drive;
 #[path = "common/stl.rs"]
 mod stl;
 #[path = "common/threemf.rs"]
 mod threemf;
 #[path = "common/ui.rs"]
 mod ui;
+use drive::{circle, click_in_side_panel, drag, harness, press};
 use ui::settle;
-
-fn harness(answers: Vec<(FileKind, PathBuf)>) -> Harness<'static, TraceryApp> {
-    Harness::builder()
-        .with_size(egui::vec2(1280.0, 800.0))
-        .build_eframe(move |_| TraceryApp::with(Box::new(ScriptedDialogs { answers }), None))
-}
-
-fn press(harness: &Harness<'static, TraceryApp>, pos: Pos2, pressed: bool) {
-    harness.event(Event::PointerButton { pos, button: PointerButton::Primary, pressed, modifiers: Modifiers::NONE });
-}
-
-/// Drags along `points` with the primary button, one frame per point.
-fn drag(harness: &mut Harness<'static, TraceryApp>, points: &[Pos2]) {
-    harness.hover_at(points[0]);
-    harness.step();
-    press(harness, points[0], true);
-    harness.step();
-    for &p in &points[1..] {
-        harness.hover_at(p);
-        harness.step();
-    }
-    press(harness, *points.last().unwrap(), false);
-    harness.step();
-}
-
-/// Scrolls the side panel to the widget labelled `label`, then clicks it.
-fn click_in_side_panel(harness: &mut Harness<'static, TraceryApp>, label: &str) {
-    harness.get_by_label(label).scroll_to_me();
-    harness.run_steps(3);
-    harness.get_by_label(label).click();
-    harness.step();
-}
-
-/// A loop drawn on the canvas: a circle of `radius` points around `center`.
-fn circle(center: Pos2, radius: f32) -> Vec<Pos2> {
-    (0..=64)
-        .map(|k| {
-            let a = k as f32 / 64.0 * std::f32::consts::TAU;
-            center + egui::vec2(radius * a.cos(), radius * a.sin())
-        })
-        .collect()
-}
 
 #[test]
 fn a_drag_on_the_canvas_yields_a_pattern() {

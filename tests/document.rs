@@ -110,3 +110,55 @@ fn the_command_line_and_the_app_share_their_defaults() {
     let off = Wrapper::parse_from(["synth", "--exemplar", "l", "--along", "x:1", "--closed-pattern", "false"]).args;
     assert!(!off.settings().closed_pattern);
 }
+
+#[test]
+fn a_raster_project_keeps_its_pictures_and_avoided_areas() {
+    use tracery::document::{AvoidStroke, RasterBrushItem};
+    let mut doc = Document::default();
+    let mut png = Vec::new();
+    let bar = image::RgbaImage::from_fn(60, 20, |x, y| {
+        image::Rgba([x as u8 * 4, 90, 40, if (5..15).contains(&y) { 255 } else { 0 }])
+    });
+    bar.write_to(&mut std::io::Cursor::new(&mut png), image::ImageFormat::Png).unwrap();
+    let bar_ref = doc.import_png("bar.png", &png).unwrap();
+    assert_eq!(bar_ref, ExemplarRef::Imported("bar".into()));
+    assert!(doc.import_png("notes.png", b"not a picture").is_err());
+    let item = RasterBrushItem { exemplar: bar_ref.clone(), ..RasterBrushItem::default() };
+    doc.add_curve(
+        vec![tracery_core::DVec2::ZERO, tracery_core::DVec2::new(50.0, 0.0)],
+        false,
+        ModeSettings::RasterBrush(item),
+    );
+    doc.avoid.push(AvoidStroke { points: vec![[10.0, -5.0], [12.0, 5.0]], width_mm: 4.0 });
+
+    let text = doc.to_ron().unwrap();
+    // The picture travels as base64 text, not as a list of numbers.
+    assert!(text.len() < 2 * png.len() + 2000, "{} bytes of project for a {}-byte picture", text.len(), png.len());
+    let back = Document::from_ron(&text).unwrap();
+    assert_eq!(back, doc);
+    assert_eq!(back.imported_raster[0].png, png);
+    let exemplar = back.raster_exemplar(&bar_ref).unwrap();
+    assert_eq!((exemplar.width(), exemplar.height()), (60, 20));
+    // The avoided area is the brush's capsule: 4 mm wide around a 10.2 mm stroke.
+    let area = tracery::document::avoided_region(&back.avoid).area();
+    let expected = 4.0 * 104f64.sqrt() + std::f64::consts::PI * 4.0;
+    assert!((area - expected).abs() < 0.1, "{area} vs {expected}");
+}
+
+#[test]
+fn the_command_line_and_the_app_share_the_raster_defaults() {
+    use clap::Parser;
+    use tracery::cli::RasterArgs;
+    #[derive(Parser)]
+    struct Wrapper {
+        #[command(flatten)]
+        args: RasterArgs,
+    }
+    let parsed = Wrapper::parse_from(["raster", "--exemplar", "rope", "--along", "line:100"]).args;
+    use tracery::modes::ModeUi;
+    let ModeSettings::RasterBrush(item) = tracery::modes::raster_brush::RasterBrushUi.default_settings() else {
+        panic!("not raster")
+    };
+    assert_eq!(item.settings, parsed.settings());
+    assert_eq!(item.settings, tracery_core::raster_brush::Settings::default());
+}

@@ -8,7 +8,7 @@
 
 use std::path::PathBuf;
 
-use egui_kittest::{Harness, SnapshotOptions};
+use egui_kittest::{Harness, SnapshotOptions, SnapshotResults};
 use tracery::TraceryApp;
 use tracery::dialogs::ScriptedDialogs;
 use tracery::modes::{ModeEnv, REGISTRY};
@@ -36,14 +36,20 @@ fn app() -> TraceryApp {
     TraceryApp::with(Box::new(ScriptedDialogs::default()), None)
 }
 
-/// Renders one panel of a fresh app, sized to its contents.
-fn panel_snapshot(name: &str, size: egui::Vec2, mut panel: impl FnMut(&mut TraceryApp, &mut egui::Ui) + 'static) {
+/// Renders one panel of a fresh app, sized to its contents; the result
+/// fails the test when dropped, unless merged into another.
+fn panel_snapshot(
+    name: &str,
+    size: egui::Vec2,
+    mut panel: impl FnMut(&mut TraceryApp, &mut egui::Ui) + 'static,
+) -> SnapshotResults {
     let mut harness = Harness::builder()
         .with_size(size)
         .wgpu()
         .build_ui_state(move |ui: &mut egui::Ui, app: &mut TraceryApp| panel(app, ui), app());
     harness.run();
     harness.snapshot_options(name, &options());
+    harness.take_snapshot_results()
 }
 
 #[test]
@@ -73,15 +79,18 @@ fn preview_3d_empty() {
 
 #[test]
 fn every_mode_settings() {
+    // One result for all modes: kittest asks that results of several
+    // harnesses in one test be merged.
+    let mut results = SnapshotResults::new();
     for mode in REGISTRY {
         let name = format!("mode_{}", mode.name().to_lowercase().replace(' ', "_"));
         let mut settings = mode.default_settings();
-        panel_snapshot(&name, egui::vec2(280.0, 620.0), move |app, ui| {
+        results.extend(panel_snapshot(&name, egui::vec2(280.0, 620.0), move |app, ui| {
             let mut commands = Vec::new();
             let doc = app.doc.clone();
             let mut env = ModeEnv { doc: &doc, caches: app.caches_mut(), commands: &mut commands };
             mode.settings_ui(ui, &mut settings, &mut env);
-        });
+        }));
     }
 }
 

@@ -158,7 +158,12 @@ impl TraceryApp {
                 return;
             }
         };
-        let ModeSettings::VectorBrush(item) = self.settings().for_new_curve();
+        // Only the vector brush is fast enough to follow the pointer; a raster
+        // curve's pattern comes when the stroke ends.
+        let ModeSettings::VectorBrush(item) = self.settings().for_new_curve() else {
+            self.live.retain(&[]);
+            return;
+        };
         let Ok(exemplar) = self.caches.exemplar(&self.doc, &item.exemplar) else { return };
         let job = LiveJob {
             raw: Arc::new(stroke.points.clone()),

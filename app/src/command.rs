@@ -33,6 +33,8 @@ pub enum Command {
     SaveAs,
     /// Import an SVG exemplar.
     ImportSvg,
+    /// Import a PNG exemplar for the raster brush.
+    ImportPng,
     /// Export STL through a file dialog.
     ExportStl,
     /// Export 3MF (one object per curve) through a file dialog.
@@ -47,17 +49,20 @@ pub enum Command {
     Deselect,
     /// Another pattern for the selected curve (a new seed).
     AnotherOne,
+    /// Forget every area painted with the avoidance brush.
+    ClearAvoided,
 }
 
 impl Command {
     /// Every command, in menu order.
-    pub const ALL: [Command; 13] = [
+    pub const ALL: [Command; 15] = [
         Command::Undo,
         Command::Redo,
         Command::Open,
         Command::Save,
         Command::SaveAs,
         Command::ImportSvg,
+        Command::ImportPng,
         Command::ExportStl,
         Command::Export3mf,
         Command::ExportSvg,
@@ -65,6 +70,7 @@ impl Command {
         Command::Delete,
         Command::Deselect,
         Command::AnotherOne,
+        Command::ClearAvoided,
     ];
 
     /// The words on its button.
@@ -76,6 +82,7 @@ impl Command {
             Command::Save => "Save",
             Command::SaveAs => "Save…",
             Command::ImportSvg => "Import SVG…",
+            Command::ImportPng => "Import PNG…",
             Command::ExportStl => "Export STL…",
             Command::Export3mf => "Export 3MF…",
             Command::ExportSvg => "Export SVG…",
@@ -83,6 +90,7 @@ impl Command {
             Command::Delete => "Delete",
             Command::Deselect => "Deselect",
             Command::AnotherOne => "Another one",
+            Command::ClearAvoided => "Clear avoided areas",
         }
     }
 
@@ -98,6 +106,8 @@ impl Command {
             Command::Deselect => DESELECT,
             Command::SaveAs
             | Command::ImportSvg
+            | Command::ImportPng
+            | Command::ClearAvoided
             | Command::Export3mf
             | Command::ExportSvg
             | Command::QuickExport

@@ -11,7 +11,7 @@ use tracery_core::mesh::Mesh;
 use crate::TraceryApp;
 use crate::command::Command;
 use crate::dialogs::FileKind;
-use crate::document::{Document, ModeSettings};
+use crate::document::{Document, ModeSettings, RasterBrushItem, VectorBrushItem};
 use crate::files::write_atomically;
 use crate::worker::JobState;
 
@@ -40,6 +40,11 @@ pub fn run(app: &mut TraceryApp, command: Command) {
                 app.import_svg(&p);
             }
         }
+        Command::ImportPng => {
+            if let Some(p) = app.dialogs.pick(FileKind::ImportPng) {
+                app.import_png(&p);
+            }
+        }
         Command::ExportStl => match app.dialogs.pick(FileKind::ExportStl) {
             Some(p) => app.export_stl_to(&p),
             None => app.message = Some(("No file chosen; Quick export writes without a dialog".into(), false)),
@@ -58,6 +63,14 @@ pub fn run(app: &mut TraceryApp, command: Command) {
         Command::Delete => app.delete_selected(),
         Command::Deselect => app.selected = None,
         Command::AnotherOne => app.next_alternative(),
+        Command::ClearAvoided => {
+            if !app.doc.avoid.is_empty() {
+                app.history.record(app.doc.clone());
+                app.doc.avoid.clear();
+                app.history_handled = true;
+                app.message = Some(("Cleared the avoided areas".into(), false));
+            }
+        }
     }
 }
 
@@ -93,8 +106,43 @@ impl TraceryApp {
             Ok(r) => {
                 self.history.record(before);
                 self.history_handled = true;
+                // An SVG exemplar is for the vector brush: the controls switch to it.
                 match self.settings_mut() {
                     ModeSettings::VectorBrush(v) => v.exemplar = r.clone(),
+                    other => {
+                        *other =
+                            ModeSettings::VectorBrush(VectorBrushItem { exemplar: r.clone(), ..Default::default() })
+                    }
+                }
+                self.message = Some((format!("Imported '{}'", r.name()), false));
+            }
+            Err(e) => self.message = Some((format!("Could not import: {e}"), true)),
+        }
+    }
+
+    /// Imports a PNG exemplar from `path` for the raster brush; on failure
+    /// the document is left as it was.
+    pub fn import_png(&mut self, path: &Path) {
+        let name = path.file_name().map_or_else(|| "exemplar.png".into(), |n| n.to_string_lossy().into_owned());
+        let bytes = match std::fs::read(path) {
+            Ok(bytes) => bytes,
+            Err(e) => {
+                self.message = Some((format!("Could not read {}: {e}", path.display()), true));
+                return;
+            }
+        };
+        let before = self.doc.clone();
+        match self.doc.import_png(&name, &bytes) {
+            Ok(r) => {
+                self.history.record(before);
+                self.history_handled = true;
+                // A PNG exemplar is for the raster brush: the controls switch to it.
+                match self.settings_mut() {
+                    ModeSettings::RasterBrush(v) => v.exemplar = r.clone(),
+                    other => {
+                        *other =
+                            ModeSettings::RasterBrush(RasterBrushItem { exemplar: r.clone(), ..Default::default() })
+                    }
                 }
                 self.message = Some((format!("Imported '{}'", r.name()), false));
             }
@@ -235,13 +283,15 @@ impl TraceryApp {
         }
     }
 
-    /// Files dropped on the window: projects open, anything else imports as an exemplar.
+    /// Files dropped on the window: projects open, PNG files import as raster
+    /// exemplars, anything else as a vector exemplar.
     pub(crate) fn dropped_files(&mut self, ctx: &egui::Context) {
         let dropped = ctx.input(|i| i.raw.dropped_files.clone());
         for file in dropped {
             let path = file.path().to_path_buf();
             match path.extension().and_then(|e| e.to_str()).map(str::to_ascii_lowercase).as_deref() {
                 Some("ron") => self.open_project(&path),
+                Some("png") => self.import_png(&path),
                 _ => self.import_svg(&path),
             }
         }

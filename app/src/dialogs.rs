@@ -7,6 +7,8 @@ use std::path::PathBuf;
 pub enum FileKind {
     /// An SVG exemplar to import.
     ImportSvg,
+    /// A PNG exemplar (with transparency) to import.
+    ImportPng,
     /// A project to open.
     OpenProject,
     /// Where to save the project.
@@ -34,6 +36,7 @@ impl Dialogs for SystemDialogs {
         let dialog = rfd::FileDialog::new();
         match kind {
             FileKind::ImportSvg => dialog.add_filter("SVG", &["svg"]).set_title("Import an exemplar").pick_file(),
+            FileKind::ImportPng => dialog.add_filter("PNG", &["png"]).set_title("Import a raster exemplar").pick_file(),
             FileKind::OpenProject => dialog.add_filter("Tracery project", &["ron"]).pick_file(),
             FileKind::SaveProject => {
                 dialog.add_filter("Tracery project", &["ron"]).set_file_name("pattern.ron").save_file()

@@ -6,12 +6,16 @@ use std::path::PathBuf;
 use std::sync::Arc;
 
 use serde::{Deserialize, Serialize};
+use tracery_core::DVec2;
 use tracery_core::curve::Curve;
 use tracery_core::export::SvgOptions;
+use tracery_core::geom::{Region, fill_triangles};
+use tracery_core::product::Texture;
+use tracery_core::raster_brush::RasterExemplar;
 use tracery_core::vector_brush::{Exemplar, SlicingMode};
 
 use crate::canvas::View;
-use crate::document::{CurveItem, Document, DocumentError, ExemplarRef, ModeSettings};
+use crate::document::{AvoidStroke, CurveItem, Document, DocumentError, ExemplarRef, ModeSettings, avoided_region};
 use crate::panels::preview_3d::Orbit;
 use crate::tools::Tool;
 
@@ -29,6 +33,10 @@ pub struct Persisted {
     pub show_band: bool,
     /// Draw the seams between pieces.
     pub show_seams: bool,
+    /// Shade where a raster pattern may not go (fold-overs and avoided areas).
+    pub show_invalid: bool,
+    /// Width of the avoidance brush, mm.
+    pub avoid_width_mm: f64,
     /// Show the 3D preview.
     pub show_3d: bool,
     /// Highlight thin features, narrow gaps and weak bridges on the canvas.
@@ -55,6 +63,8 @@ impl Default for Persisted {
             tool: Tool::Draw,
             show_band: true,
             show_seams: false,
+            show_invalid: true,
+            avoid_width_mm: DEFAULT_AVOID_WIDTH_MM,
             show_3d: false,
             show_print_flaws: true,
             show_gallery: true,
@@ -66,6 +76,9 @@ impl Default for Persisted {
         }
     }
 }
+
+/// Width of the avoidance brush until the person changes it, mm.
+pub const DEFAULT_AVOID_WIDTH_MM: f64 = 6.0;
 
 fn default_export_folder() -> PathBuf {
     std::env::var_os("HOME").map_or_else(|| PathBuf::from("."), |h| PathBuf::from(h).join("Tracery"))
@@ -98,6 +111,21 @@ pub struct Caches {
     pictures: HashMap<(ExemplarRef, SlicingMode), Option<ExemplarPicture>>,
     /// Smoothing runs when a curve changes, not on every frame.
     smoothed: HashMap<u64, Smoothed>,
+    raster_exemplars: HashMap<ExemplarRef, Arc<RasterExemplar>>,
+    /// Pictures uploaded to the GPU, by the address of their pixels (kept
+    /// alive here, so an address is not reused while its entry exists).
+    textures: HashMap<usize, (Arc<[u8]>, egui::TextureHandle)>,
+    avoided: Avoided,
+}
+
+/// The avoided area and its triangles, and the strokes they were made from.
+#[derive(Default)]
+pub struct Avoided {
+    strokes: Vec<AvoidStroke>,
+    /// The area, mm (shared with the jobs).
+    pub region: Arc<Region>,
+    /// Its triangles, for drawing.
+    pub triangles: Vec<[DVec2; 3]>,
 }
 
 impl Caches {
@@ -121,9 +149,44 @@ impl Caches {
         self.pictures.get(&key).and_then(Option::as_ref)
     }
 
+    /// The raster exemplar a reference names, loaded once.
+    pub fn raster_exemplar(&mut self, doc: &Document, r: &ExemplarRef) -> Result<Arc<RasterExemplar>, DocumentError> {
+        if let Some(e) = self.raster_exemplars.get(r) {
+            return Ok(e.clone());
+        }
+        let e = Arc::new(doc.raster_exemplar(r)?);
+        self.raster_exemplars.insert(r.clone(), e.clone());
+        Ok(e)
+    }
+
+    /// `texture` uploaded for drawing, once for as long as something holds it.
+    pub fn texture(&mut self, ctx: &egui::Context, texture: &Texture) -> egui::TextureId {
+        // Pictures nothing else holds any more are dropped first.
+        self.textures.retain(|_, (pixels, _)| Arc::strong_count(pixels) > 1);
+        let key = Arc::as_ptr(&texture.rgba).cast::<u8>() as usize;
+        let entry = self.textures.entry(key).or_insert_with(|| {
+            let size = [texture.width_px as usize, texture.height_px as usize];
+            let image = egui::ColorImage::from_rgba_unmultiplied(size, &texture.rgba);
+            let handle = ctx.load_texture(format!("texture-{key:x}"), image, egui::TextureOptions::LINEAR);
+            (texture.rgba.clone(), handle)
+        });
+        entry.1.id()
+    }
+
+    /// The area the avoidance brush covers in `strokes`, made again only when they change.
+    pub fn avoided(&mut self, strokes: &[AvoidStroke]) -> &Avoided {
+        if self.avoided.strokes != strokes {
+            let region = avoided_region(strokes);
+            let triangles = fill_triangles(&region);
+            self.avoided = Avoided { strokes: strokes.to_vec(), region: Arc::new(region), triangles };
+        }
+        &self.avoided
+    }
+
     /// Forgets imported exemplars (the document changed under them).
     pub fn forget_imported(&mut self) {
         self.exemplars.retain(|r, _| matches!(r, ExemplarRef::Builtin(_)));
+        self.raster_exemplars.retain(|r, _| matches!(r, ExemplarRef::Builtin(_)));
         self.pictures.retain(|(r, _), _| matches!(r, ExemplarRef::Builtin(_)));
     }
 

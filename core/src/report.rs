@@ -131,7 +131,7 @@ impl std::fmt::Display for Warning {
             ),
             Warning::WeakBridges { count, width_mm, limit_mm } => write!(
                 f,
-                "{count} bridge(s) between pieces narrower than {limit_mm:.2} mm (weakest {width_mm:.2} mm): raise the minimum portal width"
+                "{count} bridge(s) between pieces narrower than {limit_mm:.2} mm (weakest {width_mm:.2} mm): thicken thin features, or with the vector brush raise the minimum portal width"
             ),
             Warning::FewLayers { layers } => {
                 write!(f, "the pattern is only {layers:.1} layers thick: make it thicker or the layers thinner")

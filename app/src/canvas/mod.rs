@@ -16,6 +16,7 @@ use tracery_core::DVec2;
 
 use crate::TraceryApp;
 use crate::modes;
+use crate::tools::avoid::AvoidDrag;
 use crate::tools::edit::{EditDrag, PICK_RADIUS_POINTS};
 use crate::tools::{Gesture, Tool, draw, pan};
 
@@ -23,6 +24,9 @@ use crate::tools::{Gesture, Tool, draw, pan};
 const WHEEL_ZOOM: f32 = 0.0015;
 /// Click radius for selecting a curve, in screen points.
 const SELECT_RADIUS_POINTS: f64 = 6.0;
+
+/// Areas painted with the avoidance brush.
+pub const AVOIDED: Color32 = Color32::from_rgba_premultiplied(110, 20, 20, 60);
 
 /// The selected curve's colour.
 pub const SELECTION: Color32 = Color32::from_rgb(40, 140, 255);
@@ -67,11 +71,27 @@ pub fn canvas_ui(app: &mut TraceryApp, ui: &mut egui::Ui) {
     {
         if app.state.tool == Tool::Ring {
             app.add_jump_ring_at(p);
+        } else if app.state.tool == Tool::Avoid {
+            app.doc.avoid.push(AvoidDrag::begin(p).finish(app.state.avoid_width_mm));
         } else {
             app.selected = curve_at(app, p, SELECT_RADIUS_POINTS / f64::from(view.points_per_mm));
         }
     }
     paint_document(app, ui, &painter, rect);
+}
+
+/// The areas painted with the avoidance brush, hatched in red, so a person
+/// sees them whatever the mode.
+fn paint_avoided(app: &mut TraceryApp, painter: &egui::Painter, rect: egui::Rect) {
+    if app.doc.avoid.is_empty() {
+        return;
+    }
+    let view = app.state.view;
+    let avoided = app.caches.avoided(&app.doc.avoid);
+    painter.add(fill(&view, rect, &avoided.triangles, AVOIDED));
+    for ring in avoided.region.rings() {
+        painter.add(polyline(&view, rect, ring, true, Stroke::new(1.0, Color32::from_rgb(200, 60, 60))));
+    }
 }
 
 fn handle_gestures(app: &mut TraceryApp, ui: &egui::Ui, response: &egui::Response) {
@@ -94,6 +114,7 @@ fn handle_gestures(app: &mut TraceryApp, ui: &egui::Ui, response: &egui::Respons
             Tool::Pan => Some(Gesture::Pan(pan::Pan)),
             // The ring tool acts on clicks only.
             Tool::Ring => None,
+            Tool::Avoid => Some(Gesture::Avoid(AvoidDrag::begin(p))),
             Tool::Edit => {
                 let found =
                     EditDrag::begin(&app.doc, app.selected, p, tolerance_mm, |q| curve_at(app, q, tolerance_mm));
@@ -112,6 +133,11 @@ fn handle_gestures(app: &mut TraceryApp, ui: &egui::Ui, response: &egui::Respons
                     stroke.extend(p);
                 }
             }
+            Some(Gesture::Avoid(stroke)) => {
+                if let Some(p) = pointer.map(world) {
+                    stroke.extend(p);
+                }
+            }
             Some(Gesture::Edit(drag)) => {
                 if let Some(p) = pointer.map(world) {
                     drag.drag(&mut app.doc, p);
@@ -121,26 +147,44 @@ fn handle_gestures(app: &mut TraceryApp, ui: &egui::Ui, response: &egui::Respons
         }
     }
     if response.drag_stopped() {
-        if let Some(Gesture::Stroke(stroke)) = app.gesture.take()
-            && let Some((points, closed)) = stroke.finish(view.points_per_mm)
-        {
-            app.add_curve(points, closed);
+        match app.gesture.take() {
+            Some(Gesture::Stroke(stroke)) => {
+                if let Some((points, closed)) = stroke.finish(view.points_per_mm) {
+                    app.add_curve(points, closed);
+                }
+            }
+            Some(Gesture::Avoid(stroke)) => app.doc.avoid.push(stroke.finish(app.state.avoid_width_mm)),
+            _ => {}
         }
         app.gesture = None;
     }
 }
 
-fn paint_document(app: &TraceryApp, ui: &egui::Ui, painter: &egui::Painter, rect: egui::Rect) {
+fn paint_document(app: &mut TraceryApp, ui: &egui::Ui, painter: &egui::Painter, rect: egui::Rect) {
     let view = app.state.view;
     let dark = ui.visuals().dark_mode;
     let ink = if dark { Color32::from_rgb(230, 200, 140) } else { Color32::from_rgb(40, 40, 48) };
-    let toggles = modes::OverlayToggles { band: app.state.show_band, seams: app.state.show_seams };
+    let toggles = modes::OverlayToggles {
+        band: app.state.show_band,
+        seams: app.state.show_seams,
+        invalid: app.state.show_invalid,
+    };
+    paint_avoided(app, painter, rect);
     for item in &app.doc.curves {
         let selected = app.selected == Some(item.id);
         if let Some(product) = app.worker.output(item.id) {
             let stale = app.worker.is_stale(item.id);
             let color = if stale { ink.gamma_multiply(0.45) } else { ink };
-            painter.add(fill(&view, rect, &product.fill_mm, color));
+            match &product.textured_mm {
+                Some(textured) => {
+                    let tint = if stale { Color32::WHITE.gamma_multiply(0.45) } else { Color32::WHITE };
+                    let texture = textured.texture.as_ref().map(|t| app.caches.texture(ui.ctx(), t));
+                    painter.add(paint::textured(&view, rect, textured, texture, tint));
+                }
+                None => {
+                    painter.add(fill(&view, rect, &product.fill_mm, color));
+                }
+            }
             modes::mode_ui(&item.mode).overlays_ui(painter, &view, rect, product, toggles);
             if app.state.show_print_flaws
                 && let Some(found) = &product.printability
@@ -158,6 +202,14 @@ fn paint_document(app: &TraceryApp, ui: &egui::Ui, painter: &egui::Painter, rect
                 painter.circle(view.to_screen(rect, p), 4.0, Color32::WHITE, Stroke::new(1.5, SELECTION));
             }
         }
+    }
+    if let Some(Gesture::Avoid(stroke)) = &app.gesture {
+        let width = (app.state.avoid_width_mm as f32 * view.points_per_mm).max(1.0);
+        let mut points: Vec<egui::Pos2> = stroke.points.iter().map(|&p| view.to_screen(rect, p)).collect();
+        if points.len() == 1 {
+            points.push(points[0]);
+        }
+        painter.add(egui::Shape::line(points, Stroke::new(width, AVOIDED)));
     }
     if let Some(Gesture::Stroke(stroke)) = &app.gesture {
         if let Some(product) = app.live_output() {

@@ -27,6 +27,30 @@ pub fn fill(view: &View, rect: Rect, triangles: &[[DVec2; 3]], color: Color32) -
     Shape::mesh(mesh)
 }
 
+/// Textured triangles in world coordinates, tinted (white shows the picture
+/// as it is); without a texture, drawn in the tint.
+pub fn textured(
+    view: &View,
+    rect: Rect,
+    textured: &tracery_core::product::TexturedMesh,
+    texture: Option<egui::TextureId>,
+    tint: Color32,
+) -> Shape {
+    let mut mesh = egui::Mesh::with_texture(texture.unwrap_or_default());
+    let size =
+        textured.texture.as_ref().map_or(DVec2::ONE, |t| DVec2::new(f64::from(t.width_px), f64::from(t.height_px)));
+    for (p, uv) in textured.positions_mm.iter().zip(&textured.uvs_px) {
+        let uv = if texture.is_some() { *uv / size } else { DVec2::ZERO };
+        mesh.vertices.push(egui::epaint::Vertex {
+            pos: view.to_screen(rect, *p),
+            uv: egui::pos2(uv.x as f32, uv.y as f32),
+            color: tint,
+        });
+    }
+    mesh.indices.extend(textured.triangles.iter().flatten());
+    Shape::mesh(mesh)
+}
+
 /// Filled triangles in millimetres fitted into `rect` (a thumbnail).
 pub fn fill_fitted(rect: Rect, bounds: tracery_core::geom::Rect, triangles: &[[DVec2; 3]], color: Color32) -> Shape {
     let scale = (f64::from(rect.width()) / bounds.width()).min(f64::from(rect.height()) / bounds.height());

@@ -5,8 +5,10 @@
 
 mod history;
 pub mod legacy;
+mod raster;
 
 pub use history::History;
+pub use raster::{AvoidStroke, DEFAULT_RASTER_EXEMPLAR, ImportedRaster, RasterBrushItem, avoided_region};
 
 use serde::{Deserialize, Serialize};
 use tracery_core::DVec2;
@@ -60,6 +62,8 @@ pub struct VectorBrushItem {
 pub enum ModeSettings {
     /// Topology-constrained vector patterns along the curve.
     VectorBrush(VectorBrushItem),
+    /// Bitmap exemplars laid along the curve.
+    RasterBrush(RasterBrushItem),
 }
 
 impl Default for ModeSettings {
@@ -73,6 +77,7 @@ impl ModeSettings {
     pub fn band_mm(&self) -> f64 {
         match self {
             ModeSettings::VectorBrush(v) => v.settings.band_mm,
+            ModeSettings::RasterBrush(r) => r.settings.band_mm,
         }
     }
 
@@ -84,6 +89,7 @@ impl ModeSettings {
                 v.settings.seed = 0;
                 v.settings.alternative = 0;
             }
+            ModeSettings::RasterBrush(_) => {}
         }
         out
     }
@@ -92,6 +98,8 @@ impl ModeSettings {
     pub fn alternative(&self) -> u32 {
         match self {
             ModeSettings::VectorBrush(v) => v.settings.alternative,
+            // The raster brush has one result.
+            ModeSettings::RasterBrush(_) => 0,
         }
     }
 
@@ -99,6 +107,7 @@ impl ModeSettings {
     pub fn set_alternative(&mut self, k: u32) {
         match self {
             ModeSettings::VectorBrush(v) => v.settings.alternative = k,
+            ModeSettings::RasterBrush(_) => {}
         }
     }
 }
@@ -173,6 +182,10 @@ pub struct Document {
     pub curves: Vec<CurveItem>,
     /// Imported exemplars.
     pub imported: Vec<ImportedExemplar>,
+    /// Imported PNG exemplars of the raster brush (absent in older projects).
+    pub imported_raster: Vec<ImportedRaster>,
+    /// Areas painted with the avoidance brush, which raster patterns leave empty.
+    pub avoid: Vec<AvoidStroke>,
     /// The next curve id.
     pub next_id: u64,
     /// The printer the patterns are made for (absent in older projects: the defaults).
@@ -185,6 +198,8 @@ impl Default for Document {
             format_version: FORMAT_VERSION,
             curves: Vec::new(),
             imported: Vec::new(),
+            imported_raster: Vec::new(),
+            avoid: Vec::new(),
             next_id: 0,
             print: PrintSettings::default(),
         }

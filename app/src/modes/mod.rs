@@ -2,6 +2,7 @@
 //! settings UI, its overlays and the job it hands the worker), and the
 //! registry of them. Each mode lives in its own file and knows no other.
 
+pub mod raster_brush;
 pub mod vector_brush;
 
 use std::sync::Arc;
@@ -26,6 +27,32 @@ pub struct OverlayToggles {
     pub band: bool,
     /// Seams between pieces.
     pub seams: bool,
+    /// Where a pattern may not go (the raster brush's fold-overs and avoided areas).
+    pub invalid: bool,
+}
+
+/// The product's band edges and seams, as the toggles ask.
+pub fn band_and_seams_ui(
+    painter: &egui::Painter,
+    view: &View,
+    rect: egui::Rect,
+    product: &Product,
+    toggles: OverlayToggles,
+) {
+    if toggles.band {
+        for edge in &product.overlays.band_edges_mm {
+            let stroke = Stroke::new(1.0, Color32::from_rgba_unmultiplied(90, 140, 230, 120));
+            painter.add(polyline(view, rect, edge, false, stroke));
+        }
+    }
+    if toggles.seams {
+        for s in &product.overlays.seams_mm {
+            painter.line_segment(
+                [view.to_screen(rect, s[0]), view.to_screen(rect, s[1])],
+                Stroke::new(1.0, Color32::from_rgb(230, 70, 70)),
+            );
+        }
+    }
 }
 
 /// What a mode's settings UI may use besides the settings it edits.
@@ -62,20 +89,7 @@ pub trait ModeUi: Sync {
         product: &Product,
         toggles: OverlayToggles,
     ) {
-        if toggles.band {
-            for edge in &product.overlays.band_edges_mm {
-                let stroke = Stroke::new(1.0, Color32::from_rgba_unmultiplied(90, 140, 230, 120));
-                painter.add(polyline(view, rect, edge, false, stroke));
-            }
-        }
-        if toggles.seams {
-            for s in &product.overlays.seams_mm {
-                painter.line_segment(
-                    [view.to_screen(rect, s[0]), view.to_screen(rect, s[1])],
-                    Stroke::new(1.0, Color32::from_rgb(230, 70, 70)),
-                );
-            }
-        }
+        band_and_seams_ui(painter, view, rect, product, toggles);
     }
 
     /// The job that computes a curve's pattern.
@@ -89,7 +103,7 @@ pub trait ModeUi: Sync {
 }
 
 /// Every mode, in picker order.
-pub static REGISTRY: &[&dyn ModeUi] = &[&vector_brush::VectorBrushUi];
+pub static REGISTRY: &[&dyn ModeUi] = &[&vector_brush::VectorBrushUi, &raster_brush::RasterBrushUi];
 
 /// The mode that owns `settings`.
 pub fn mode_ui(settings: &ModeSettings) -> &'static dyn ModeUi {
@@ -102,6 +116,8 @@ pub fn mode_ui(settings: &ModeSettings) -> &'static dyn ModeUi {
 pub enum ModeJob {
     /// The vector brush along a curve.
     VectorBrush(vector_brush::VectorBrushJob),
+    /// The raster brush along a curve.
+    RasterBrush(raster_brush::RasterBrushJob),
 }
 
 /// Why a job failed.
@@ -111,6 +127,9 @@ pub enum JobError {
     /// The vector brush failed.
     #[error(transparent)]
     VectorBrush(#[from] tracery_core::vector_brush::SynthesisError),
+    /// The raster brush failed.
+    #[error(transparent)]
+    RasterBrush(#[from] tracery_core::raster_brush::RasterError),
     /// The jump rings could not be added.
     #[error(transparent)]
     JumpRing(#[from] JumpRingError),
@@ -120,6 +139,7 @@ impl MaybeCancelled for JobError {
     fn is_cancelled(&self) -> bool {
         match self {
             JobError::VectorBrush(e) => e.is_cancelled(),
+            JobError::RasterBrush(e) => e.is_cancelled(),
             JobError::JumpRing(_) => false,
         }
     }
@@ -130,6 +150,7 @@ impl ModeJob {
     pub fn run(&self, control: &Control) -> Result<Product, JobError> {
         match self {
             ModeJob::VectorBrush(job) => Ok(job.run(control)?),
+            ModeJob::RasterBrush(job) => Ok(job.run(control)?),
         }
     }
 
@@ -138,6 +159,8 @@ impl ModeJob {
     pub fn alternatives(&self, control: &Control) -> Result<Vec<Product>, JobError> {
         match self {
             ModeJob::VectorBrush(job) => Ok(job.alternatives(control)?),
+            // One result: the search is exact.
+            ModeJob::RasterBrush(job) => Ok(vec![job.run(control)?]),
         }
     }
 
@@ -146,6 +169,7 @@ impl ModeJob {
     pub fn best(&self) -> ModeJob {
         match self {
             ModeJob::VectorBrush(job) => ModeJob::VectorBrush(job.best()),
+            ModeJob::RasterBrush(_) => self.clone(),
         }
     }
 }

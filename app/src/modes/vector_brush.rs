@@ -130,7 +130,7 @@ impl ModeUi for VectorBrushUi {
     }
 
     fn settings_ui(&self, ui: &mut egui::Ui, settings: &mut ModeSettings, env: &mut ModeEnv<'_>) {
-        let ModeSettings::VectorBrush(item) = settings;
+        let ModeSettings::VectorBrush(item) = settings else { return };
         exemplar_picker_ui(ui, &mut item.exemplar, item.settings.slicing, env);
         ui.separator();
         ui.label(RichText::new("Pattern").strong());
@@ -144,7 +144,9 @@ impl ModeUi for VectorBrushUi {
         doc: &Document,
         caches: &mut Caches,
     ) -> Result<ModeJob, DocumentError> {
-        let ModeSettings::VectorBrush(item) = settings;
+        let ModeSettings::VectorBrush(item) = settings else {
+            return Err(DocumentError::Exemplar("not a vector-brush curve".into()));
+        };
         let exemplar = caches.exemplar(doc, &item.exemplar)?;
         Ok(ModeJob::VectorBrush(VectorBrushJob { curve: curve.clone(), exemplar, settings: item.settings.clone() }))
     }

@@ -13,6 +13,10 @@ pub fn side_panel_ui(app: &mut TraceryApp, ui: &mut egui::Ui) {
             ui.selectable_value(&mut app.state.tool, tool, tool.label());
         }
     });
+    if app.state.tool == Tool::Avoid {
+        ui.add(egui::Slider::new(&mut app.state.avoid_width_mm, 1.0..=40.0).text("Brush width (mm)"))
+            .on_hover_text("Paint areas that raster patterns leave empty; undo takes a stroke back");
+    }
     ui.separator();
     let editing = match app.selected {
         Some(id) => format!("Curve {id}"),

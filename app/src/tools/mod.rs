@@ -2,6 +2,7 @@
 //! begins on a primary press, moves with the pointer and ends on release.
 //! Secondary and middle drags pan whatever the tool.
 
+pub mod avoid;
 pub mod draw;
 pub mod edit;
 pub mod pan;
@@ -19,11 +20,13 @@ pub enum Tool {
     Pan,
     /// Click to hang a jump ring there on the nearest curve.
     Ring,
+    /// Paint areas that raster patterns leave empty.
+    Avoid,
 }
 
 impl Tool {
     /// Every tool, in toolbar order.
-    pub const ALL: [Tool; 4] = [Tool::Draw, Tool::Edit, Tool::Pan, Tool::Ring];
+    pub const ALL: [Tool; 5] = [Tool::Draw, Tool::Edit, Tool::Pan, Tool::Ring, Tool::Avoid];
 
     /// Its name on the toolbar.
     pub fn label(self) -> &'static str {
@@ -32,6 +35,7 @@ impl Tool {
             Tool::Edit => "Edit",
             Tool::Pan => "Pan",
             Tool::Ring => "Ring",
+            Tool::Avoid => "Avoid",
         }
     }
 }
@@ -45,4 +49,6 @@ pub enum Gesture {
     Edit(edit::EditDrag),
     /// The view being dragged.
     Pan(pan::Pan),
+    /// An area being painted with the avoidance brush.
+    Avoid(avoid::AvoidDrag),
 }

@@ -13,6 +13,7 @@ mod rect;
 mod resolution;
 mod sanity;
 mod segment;
+mod stroke;
 mod topology;
 mod trace;
 
@@ -26,5 +27,6 @@ pub use rect::Rect;
 pub use resolution::{mean_width, without_slivers};
 pub use sanity::{MIN_RING_AREA, RegionDefect};
 pub use segment::closest_on_segment;
+pub use stroke::{STROKE_ARC_TOLERANCE_MM, brush_stroke};
 pub use topology::{PatternTopology, Topology, count_topology};
 pub use trace::{MIN_RING_PX, OPAQUE_ALPHA, PixelFrame, join_corners, trace_opaque};

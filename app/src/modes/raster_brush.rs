@@ -1,0 +1,188 @@
+//! The raster brush in the app: bitmap exemplars picked from thumbnails or
+//! imported, the ribbon's settings, the areas it may not use, and its job.
+
+use std::sync::Arc;
+
+use egui::{Color32, RichText, Stroke};
+use tracery_core::Product;
+use tracery_core::control::Control;
+use tracery_core::curve::{Along, Curve};
+use tracery_core::geom::{Region, fill_triangles};
+use tracery_core::raster_brush::{BUILTIN_NAMES, MAX_SCALE, RasterError, RasterExemplar, Settings, make_product};
+
+use super::{ModeEnv, ModeJob, ModeUi, OverlayToggles};
+use crate::canvas::{View, fill, polyline};
+use crate::command::Command;
+use crate::document::{Document, DocumentError, ExemplarRef, ModeSettings, RasterBrushItem};
+use crate::state::Caches;
+
+/// Largest thumbnail, points; each keeps its exemplar's proportions.
+const THUMBNAIL: egui::Vec2 = egui::vec2(110.0, 34.0);
+/// Where a raster pattern may not go: fold-overs of its ribbon and avoided areas.
+pub const INVALID: Color32 = Color32::from_rgba_premultiplied(120, 60, 0, 70);
+/// The outline of those areas.
+const INVALID_EDGE: Color32 = Color32::from_rgb(235, 130, 20);
+
+/// The raster brush's [`ModeUi`].
+pub struct RasterBrushUi;
+
+/// A raster-brush synthesis along one curve.
+#[derive(Clone, Debug)]
+pub struct RasterBrushJob {
+    /// The smoothed curve, mm (shared with the app's cache).
+    pub curve: Arc<Curve>,
+    /// The exemplar.
+    pub exemplar: Arc<RasterExemplar>,
+    /// The areas to leave empty, mm (shared with the app's cache).
+    pub avoid_mm: Arc<Region>,
+    /// The settings.
+    pub settings: Settings,
+}
+
+impl PartialEq for RasterBrushJob {
+    fn eq(&self, other: &Self) -> bool {
+        // Curves, exemplars and avoided areas are immutable once made: the
+        // same pointer is the same value, and comparing pointers first keeps
+        // asking the worker again each frame cheap.
+        (Arc::ptr_eq(&self.curve, &other.curve) || self.curve == other.curve)
+            && self.settings == other.settings
+            && (Arc::ptr_eq(&self.exemplar, &other.exemplar) || self.exemplar == other.exemplar)
+            && (Arc::ptr_eq(&self.avoid_mm, &other.avoid_mm) || self.avoid_mm == other.avoid_mm)
+    }
+}
+
+impl RasterBrushJob {
+    /// Runs the raster brush.
+    pub fn run(&self, control: &Control) -> Result<Product, RasterError> {
+        let along = Along::Curve(Curve::clone(&self.curve));
+        make_product(&self.exemplar, &along, &self.settings, &self.avoid_mm, control)
+    }
+}
+
+/// One exemplar's thumbnail, its proportions kept; clicked to choose it.
+fn thumbnail_ui(ui: &mut egui::Ui, env: &mut ModeEnv<'_>, r: &ExemplarRef) -> egui::Response {
+    let exemplar = env.caches.raster_exemplar(env.doc, r);
+    let Ok(exemplar) = exemplar else {
+        let (rect, response) = ui.allocate_exact_size(THUMBNAIL, egui::Sense::click());
+        let font = egui::FontId::proportional(14.0);
+        ui.painter().text(rect.center(), egui::Align2::CENTER_CENTER, "?", font, Color32::RED);
+        return response;
+    };
+    let (w, h) = (exemplar.width() as f32, exemplar.height() as f32);
+    let scale = (THUMBNAIL.x / w).min(THUMBNAIL.y / h);
+    let texture = env.caches.texture(ui.ctx(), &exemplar.texture);
+    let (rect, response) = ui.allocate_exact_size(THUMBNAIL, egui::Sense::click());
+    let image = egui::Rect::from_center_size(rect.center(), egui::vec2(w * scale, h * scale));
+    let uv = egui::Rect::from_min_max(egui::pos2(0.0, 0.0), egui::pos2(1.0, 1.0));
+    ui.painter().image(texture, image, uv, Color32::WHITE);
+    response
+}
+
+/// The picker: built-in and imported raster exemplars, and "Import PNG…".
+fn raster_picker_ui(ui: &mut egui::Ui, chosen: &mut ExemplarRef, env: &mut ModeEnv<'_>) {
+    ui.label(RichText::new("Exemplar").strong());
+    let mut refs: Vec<ExemplarRef> = BUILTIN_NAMES.iter().map(|n| ExemplarRef::Builtin(n.to_string())).collect();
+    refs.extend(env.doc.imported_raster.iter().map(|e| ExemplarRef::Imported(e.name.clone())));
+    egui::Grid::new("raster exemplars").num_columns(2).spacing([6.0, 6.0]).show(ui, |ui| {
+        for (k, r) in refs.iter().enumerate() {
+            let is_chosen = r == chosen;
+            ui.vertical(|ui| {
+                let stroke = if is_chosen {
+                    Stroke::new(2.0, ui.visuals().selection.bg_fill)
+                } else {
+                    Stroke::new(1.0, ui.visuals().widgets.noninteractive.bg_stroke.color)
+                };
+                let frame = egui::Frame::new().stroke(stroke).corner_radius(4.0).inner_margin(2.0);
+                let response = frame.show(ui, |ui| thumbnail_ui(ui, env, r)).inner;
+                let label = ui.selectable_label(is_chosen, r.name());
+                if response.clicked() || label.clicked() {
+                    *chosen = r.clone();
+                }
+            });
+            if k % 2 == 1 {
+                ui.end_row();
+            }
+        }
+    });
+    if ui.button(Command::ImportPng.label()).on_hover_text("Or drop a PNG with transparency on the window").clicked() {
+        env.commands.push(Command::ImportPng);
+    }
+}
+
+/// The ribbon's controls.
+pub fn ribbon_ui(ui: &mut egui::Ui, s: &mut Settings) {
+    ui.add(egui::Slider::new(&mut s.band_mm, 2.0..=40.0).text("Band width (mm)"));
+    ui.add(egui::Slider::new(&mut s.step_mm, 0.5..=10.0).text("Step δ (mm)"))
+        .on_hover_text("The width of each piece along the curve: smaller follows bends more closely, larger is faster");
+    ui.add(egui::Slider::new(&mut s.scale, 0.2..=MAX_SCALE).text("Scale"))
+        .on_hover_text("The pattern's height as a fraction of the band");
+    ui.checkbox(&mut s.stitching, "Stitch seams")
+        .on_hover_text("Bend each piece's pixels to meet the previous piece's edge");
+    ui.add(egui::Slider::new(&mut s.thickness_mm, 0.4..=10.0).text("Thickness (mm)"));
+}
+
+impl ModeUi for RasterBrushUi {
+    fn name(&self) -> &'static str {
+        "Raster brush"
+    }
+
+    fn default_settings(&self) -> ModeSettings {
+        ModeSettings::RasterBrush(RasterBrushItem::default())
+    }
+
+    fn owns(&self, settings: &ModeSettings) -> bool {
+        matches!(settings, ModeSettings::RasterBrush(_))
+    }
+
+    fn settings_ui(&self, ui: &mut egui::Ui, settings: &mut ModeSettings, env: &mut ModeEnv<'_>) {
+        let ModeSettings::RasterBrush(item) = settings else { return };
+        raster_picker_ui(ui, &mut item.exemplar, env);
+        ui.separator();
+        ui.label(RichText::new("Ribbon").strong());
+        ribbon_ui(ui, &mut item.settings);
+        ui.separator();
+        ui.label(RichText::new("Avoided areas").strong());
+        ui.label(RichText::new("Paint them with the Avoid tool; patterns leave them empty.").weak());
+        if Command::ClearAvoided.button(ui, !env.doc.avoid.is_empty()) {
+            env.commands.push(Command::ClearAvoided);
+        }
+    }
+
+    fn overlays_ui(
+        &self,
+        painter: &egui::Painter,
+        view: &View,
+        rect: egui::Rect,
+        product: &Product,
+        toggles: OverlayToggles,
+    ) {
+        if toggles.invalid {
+            let invalid = &product.overlays.avoided_mm;
+            painter.add(fill(view, rect, &fill_triangles(invalid), INVALID));
+            for ring in invalid.rings() {
+                painter.add(polyline(view, rect, ring, true, Stroke::new(1.0, INVALID_EDGE)));
+            }
+        }
+        super::band_and_seams_ui(painter, view, rect, product, toggles);
+    }
+
+    fn job(
+        &self,
+        curve: &Arc<Curve>,
+        settings: &ModeSettings,
+        doc: &Document,
+        caches: &mut Caches,
+    ) -> Result<ModeJob, DocumentError> {
+        let ModeSettings::RasterBrush(item) = settings else {
+            return Err(DocumentError::Exemplar("not a raster-brush curve".into()));
+        };
+        let exemplar = caches.raster_exemplar(doc, &item.exemplar)?;
+        let avoid_mm = caches.avoided(&doc.avoid).region.clone();
+        Ok(ModeJob::RasterBrush(RasterBrushJob {
+            curve: curve.clone(),
+            exemplar,
+            avoid_mm,
+            settings: item.settings.clone(),
+        }))
+    }
+}
