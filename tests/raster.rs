@@ -7,6 +7,8 @@ use std::process::Command;
 
 #[path = "common/stl.rs"]
 mod stl;
+#[path = "common/threemf.rs"]
+mod threemf;
 use stl::check_stl;
 
 fn tracery() -> Command {
@@ -32,9 +34,10 @@ fn a_raster_rope_prints_and_renders() {
     for (name, along, closed) in [("rope", "wave:120", false), ("chain", "heart:70", true), ("lace", "wave:100", false)]
     {
         let (png, stl, report) = (dir.join("out.png"), dir.join("out.stl"), dir.join("out.json"));
+        let three_mf = dir.join("out.3mf");
         let mut cmd = tracery();
         cmd.args(["raster", "--exemplar", name, "--along", along, "--dpi", "150"]);
-        cmd.arg("--png").arg(&png).arg("--stl").arg(&stl).arg("--report").arg(&report);
+        cmd.arg("--png").arg(&png).arg("--stl").arg(&stl).arg("--report").arg(&report).arg("--3mf").arg(&three_mf);
         if closed {
             cmd.arg("--closed");
         }
@@ -53,6 +56,17 @@ fn a_raster_rope_prints_and_renders() {
         assert_eq!((check.open_edges, check.misoriented_edges), (0, 0), "{name}: STL not closed");
         assert_eq!(check.shells, components, "{name}: one body per counted component");
         assert_eq!(shells, components);
+        // The slicer, apart from our code, reads the printed file as sound.
+        let read = threemf::read_3mf(&std::fs::read(&three_mf).unwrap());
+        assert_eq!((read.unit.as_str(), read.objects.len()), ("millimeter", 1), "{name}");
+        assert!(read.declared_before_use && read.build_items == 1, "{name}");
+        assert!(
+            read.objects.iter().all(|(_, _, triangles)| threemf::is_closed(triangles)),
+            "{name}: 3MF object not closed"
+        );
+        if let Some((manifold, objects)) = threemf::prusa_info(&three_mf) {
+            assert!(manifold && objects == 1, "{name}: PrusaSlicer says manifold {manifold}, {objects} object(s)");
+        }
         // 150 dpi: the picture spans the pattern's bounds at about 5.9 px per mm.
         let picture = image::load_from_memory(&std::fs::read(&png).unwrap()).unwrap().into_rgba8();
         let opaque = picture.pixels().filter(|p| p[3] >= 128).count();

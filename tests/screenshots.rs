@@ -59,3 +59,41 @@ fn regenerate_screenshots() {
     settle(&mut harness);
     save(&mut harness, "preview-3d.png");
 }
+
+#[test]
+#[ignore = "writes screenshots/; run on purpose"]
+fn regenerate_raster_screenshot() {
+    use tracery::document::{AvoidStroke, RasterBrushItem};
+    let mut harness = Harness::builder()
+        .with_size(egui::vec2(1280.0, 800.0))
+        .wgpu()
+        .build_eframe(|_| TraceryApp::with(Box::new(ScriptedDialogs::default()), None));
+    {
+        let app = harness.state_mut();
+        let raster = |name: &str| {
+            ModeSettings::RasterBrush(RasterBrushItem {
+                exemplar: ExemplarRef::Builtin(name.into()),
+                ..RasterBrushItem::default()
+            })
+        };
+        // A heart of chain, a rope wave and a vine border broken where the avoidance brush painted.
+        let heart: Vec<DVec2> = (0..32)
+            .map(|k| {
+                let t = k as f64 / 32.0 * std::f64::consts::TAU;
+                let (x, y) = (16.0 * t.sin().powi(3), 13.0 * t.cos() - 5.0 * (2.0 * t).cos() - 2.0 * (3.0 * t).cos());
+                DVec2::new(-55.0 + 1.8 * x, 5.0 + 1.8 * y)
+            })
+            .collect();
+        let id = app.doc.add_curve(heart, true, raster("chain"));
+        let wave: Vec<DVec2> =
+            (0..=16).map(|k| DVec2::new(5.0 + k as f64 * 5.0, 25.0 + 10.0 * (k as f64 / 2.5).sin())).collect();
+        app.doc.add_curve(wave, false, raster("rope"));
+        let border: Vec<DVec2> =
+            (0..=16).map(|k| DVec2::new(5.0 + k as f64 * 5.0, -20.0 + 6.0 * (k as f64 / 2.0).cos())).collect();
+        app.doc.add_curve(border, false, raster("vine"));
+        app.doc.avoid.push(AvoidStroke { points: vec![[42.0, -32.0], [46.0, -8.0]], width_mm: 7.0 });
+        app.selected = Some(id);
+    }
+    settle(&mut harness);
+    save(&mut harness, "raster-brush.png");
+}
