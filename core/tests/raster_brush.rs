@@ -239,13 +239,22 @@ fn stitched_seams_mismatch_less_than_unstitched() {
         let e = builtin(name).unwrap();
         let curve = Curve::wave(120.0).unwrap();
         let syn = synthesize(&e, &curve, &Settings::default(), &Region::default(), &Control::default()).unwrap();
-        let seams: Vec<[DVec2; 2]> =
-            syn.ribbon.pieces.iter().skip(1).map(|p| [p.corners_mm[0], p.corners_mm[3]]).collect();
-        let across: Vec<DVec2> = syn.ribbon.pieces.iter().skip(1).map(|p| p.along).collect();
+        // Only the seams the stitching changed (it leaves the others as they
+        // are); the measure below looks at the render alone.
+        let jumps: Vec<usize> = (1..syn.ribbon.pieces.len())
+            .filter(|&i| {
+                syn.seams[i - 1].as_ref().is_some_and(|m| m.remap.iter().enumerate().any(|(k, &t)| t != k as f32))
+            })
+            .collect();
+        assert!(jumps.len() >= 5, "{name}: {} stitched seams", jumps.len());
+        let piece = |i: usize| &syn.ribbon.pieces[i];
+        let seams: Vec<[DVec2; 2]> = jumps.iter().map(|&i| [piece(i).corners_mm[0], piece(i).corners_mm[3]]).collect();
+        let across: Vec<DVec2> = jumps.iter().map(|&i| piece(i).along).collect();
         let ppm = 3.0 * syn.ribbon.px_per_mm;
         let plain = seam_mismatch(&render_textured(&textured_mesh(&e, &syn, false), ppm).unwrap(), &seams, &across);
         let stitched = seam_mismatch(&render_textured(&textured_mesh(&e, &syn, true), ppm).unwrap(), &seams, &across);
-        assert!(stitched < 0.98 * plain, "{name}: stitched {stitched:.0} vs unstitched {plain:.0}");
+        eprintln!("{name}: {} seams, stitched {stitched:.0} vs unstitched {plain:.0}", seams.len());
+        assert!(stitched < 0.9 * plain, "{name}: stitched {stitched:.0} vs unstitched {plain:.0}");
     }
 }
 
@@ -403,4 +412,32 @@ fn bad_exemplars_get_clear_errors() {
     let line = Along::parse("line:60").unwrap();
     let p = make_product(&e, &line, &Settings::default(), &Region::default(), &Control::default()).unwrap();
     assert_eq!((p.topology.components, p.topology.holes), (1, 0));
+}
+
+/// The exemplar positions shown along a curve, in 4-pixel bins.
+fn shown_bins(name: &str, spec: &str, settings: &Settings) -> Vec<usize> {
+    let e = builtin(name).unwrap();
+    let Along::Curve(curve) = Along::parse(spec).unwrap() else { unreachable!() };
+    let syn = synthesize(&e, &curve, settings, &Region::default(), &Control::default()).unwrap();
+    syn.path.positions.iter().map(|p| (p.0.max(0) / 4) as usize).collect()
+}
+
+#[test]
+fn variety_breaks_up_repetition() {
+    use tracery_core::quality::{longest_repeat, near_period};
+    let mut none = Settings::default();
+    none.variety = 0.0;
+    let plain = shown_bins("stitches", "wave:400", &none);
+    let varied = shown_bins("stitches", "wave:400", &Settings::default());
+    let n = varied.len();
+    // Without variety the stitches repeat one short stretch of the exemplar.
+    assert!(near_period(&plain) < n / 4 && longest_repeat(&plain) > n / 2, "the case is a repetitive one");
+    assert_eq!(near_period(&varied), n, "no period with variety");
+    assert!(longest_repeat(&varied) <= n / 5, "longest repeat {} of {n}", longest_repeat(&varied));
+    // Another seed, another arrangement.
+    let mut other = Settings::default();
+    other.seed = 7;
+    let reseeded = shown_bins("stitches", "wave:400", &other);
+    let differ = varied.iter().zip(&reseeded).filter(|(a, b)| a != b).count();
+    assert!(differ > n / 4, "only {differ} of {n} pieces differ with another seed");
 }

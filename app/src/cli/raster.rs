@@ -40,6 +40,12 @@ pub struct RasterArgs {
     /// Thickness of the printed outline, mm [default: 2].
     #[arg(long)]
     pub thickness: Option<f64>,
+    /// How much where the pattern jumps in the exemplar changes along the curve; 0 turns it off [default: 0.5].
+    #[arg(long)]
+    pub variety: Option<f64>,
+    /// Which random choices variety makes [default: 0].
+    #[arg(long)]
+    pub seed: Option<u64>,
 }
 
 impl RasterArgs {
@@ -51,6 +57,8 @@ impl RasterArgs {
         s.scale = self.scale.unwrap_or(s.scale);
         s.stitching = !self.no_stitching;
         s.thickness_mm = self.thickness.unwrap_or(s.thickness_mm);
+        s.variety = self.variety.unwrap_or(s.variety);
+        s.seed = self.seed.unwrap_or(s.seed);
         s
     }
 }

@@ -118,6 +118,12 @@ pub fn ribbon_ui(ui: &mut egui::Ui, s: &mut Settings) {
         .on_hover_text("The pattern's height as a fraction of the band");
     ui.checkbox(&mut s.stitching, "Stitch seams")
         .on_hover_text("Bend each piece's pixels to meet the previous piece's edge");
+    ui.add(egui::Slider::new(&mut s.variety, 0.0..=2.0).text("Variety"))
+        .on_hover_text("Where the pattern jumps in the exemplar changes along the curve; 0 repeats the best jump");
+    ui.horizontal(|ui| {
+        let label = ui.label("Seed");
+        ui.add(egui::DragValue::new(&mut s.seed)).labelled_by(label.id).on_hover_text("Another seed, another pattern");
+    });
     ui.add(egui::Slider::new(&mut s.thickness_mm, 0.4..=10.0).text("Thickness (mm)"));
 }
 

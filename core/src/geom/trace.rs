@@ -9,14 +9,10 @@
 use contour::ContourBuilder;
 use glam::DVec2;
 
-use super::{FillRule, Region, resolve_contours};
+use super::{FillRule, Region, remove_specks, resolve_contours};
 
 /// Alpha (0 to 1) at and above which a pixel is opaque.
 pub const OPAQUE_ALPHA: f64 = 0.5;
-
-/// Rings smaller than this many square pixels are specks and pinholes of a
-/// single pixel: noise of the picture, not parts or holes anyone drew.
-pub const MIN_RING_PX: f64 = 1.0;
 
 /// Passes of corner joining; each can only add opaque pixels, and real
 /// pictures settle in one or two.
@@ -100,6 +96,9 @@ pub fn trace_opaque(alpha: &[u8], frame: &PixelFrame) -> Region {
     }
     let (mut values, w, h) = alpha_grid(alpha, frame);
     join_corners(&mut values, w, h);
+    // Decided on pixels, not on the traced rings' areas, so that what is
+    // kept is exactly what a count of the pixels finds.
+    remove_specks(&mut values, w, h, OPAQUE_ALPHA);
     let step = frame.mm_per_px;
     // Grid row and column 0 are the border: the picture starts one pixel in.
     let builder = ContourBuilder::new(w, h, true)
@@ -115,7 +114,7 @@ pub fn trace_opaque(alpha: &[u8], frame: &PixelFrame) -> Region {
         .flat_map(|c| c.geometry().0.iter())
         .flat_map(|p| std::iter::once(p.exterior()).chain(p.interiors()))
         .map(|ring| ring.0.iter().map(|c| DVec2::new(c.x, c.y)).collect::<Vec<_>>())
-        .filter(|r| r.len() >= 4 && super::signed_area(r).abs() >= MIN_RING_PX * step * step)
+        .filter(|r| r.len() >= 4 && super::signed_area(r) != 0.0)
         .collect();
     resolve_contours(&rings, FillRule::EvenOdd)
 }

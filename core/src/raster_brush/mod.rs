@@ -32,11 +32,11 @@ pub use builtin::{BUILTIN_NAMES, builtin};
 pub use error::{ExemplarError, RasterError};
 pub use exemplar::{MAX_HEIGHT_PX, MAX_WIDTH_PX, MIN_SIDE_PX, OPAQUE_FROM, RasterExemplar};
 pub use pipeline::{RasterSynthesis, TRACE_OVERSAMPLING, make_product, synthesize, traced_region};
-pub use placement::{PieceSamples, Placements, Position, valid_positions};
+pub use placement::{PieceSamples, Placements, Position, valid_positions, variety_bias};
 pub use ribbon::{MAX_CELLS, Ribbon, RibbonPiece, lay_ribbon};
 pub use search::{
     Closure, EdgeTable, GAMMA, JUMP_COST, MAX_FIXED_STARTS, Path, edge_cost, is_continuation, pixel_cost, search,
 };
-pub use settings::{InvalidSetting, MAX_SCALE, Settings};
+pub use settings::{InvalidSetting, MAX_SCALE, Settings, VARIETY_COST};
 pub use stitch::{STRETCH_PENALTY, SeamMap, align_seam};
 pub use textured_mesh::textured_mesh;

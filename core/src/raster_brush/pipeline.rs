@@ -7,8 +7,8 @@ use glam::DVec2;
 use super::search::{Closure, EdgeTable};
 use super::stitch::{SeamMap, align_seam};
 use super::{
-    Path, PieceSamples, Placements, RasterError, RasterExemplar, Ribbon, Settings, lay_ribbon, search, textured_mesh,
-    valid_positions,
+    Path, PieceSamples, Placements, RasterError, RasterExemplar, Ribbon, Settings, VARIETY_COST, lay_ribbon, search,
+    textured_mesh, valid_positions, variety_bias,
 };
 use crate::Product;
 use crate::control::Control;
@@ -54,9 +54,18 @@ pub fn synthesize(
     control.check()?;
     let c = ribbon.column_px;
     let samples: Vec<PieceSamples> = ribbon.pieces.iter().map(|p| PieceSamples::new(p, c)).collect();
+    let amount = settings.variety * VARIETY_COST;
     let placements: Vec<Placements> = timings.time("valid positions", || {
         use rayon::prelude::*;
-        ribbon.pieces.par_iter().zip(&samples).map(|(p, s)| valid_positions(exemplar, s, &p.avoided_px, c)).collect()
+        (ribbon.pieces.par_iter().zip(&samples).enumerate())
+            .map(|(i, (p, s))| {
+                let mut placements = valid_positions(exemplar, s, &p.avoided_px, c);
+                if amount > 0.0 {
+                    placements.bias = variety_bias(&placements.positions, i, settings.seed, amount);
+                }
+                placements
+            })
+            .collect()
     });
     if let Some(i) = placements.iter().position(|p| p.positions.is_empty()) {
         return Err(RasterError::Unplaceable { piece: i, at_mm: ribbon.pieces[i].start_mm });

@@ -75,6 +75,8 @@ pub struct Placements {
     pub positions: Vec<Position>,
     /// Positions tried (the paper's U for this piece).
     pub candidates: usize,
+    /// A cost of its own for each position (variety), added to Ω; empty: none.
+    pub bias: Vec<f64>,
 }
 
 /// Every valid position of a piece with `samples`, `column_px` tall, that
@@ -119,5 +121,32 @@ pub fn valid_positions(
         // rather than nowhere being possible; its seams cost what it breaks.
         positions.push((x0.max(0), top - 2 * c - 1));
     }
-    Placements { positions, candidates }
+    Placements { positions, candidates, bias: Vec::new() }
+}
+
+/// Random costs in `[0, amount)` for each of `positions` of piece `piece`,
+/// drawn from `seed`: the same arguments give the same costs.
+///
+/// ```
+/// use tracery_core::raster_brush::variety_bias;
+/// let a = variety_bias(&[(0, 0), (5, 1)], 3, 7, 100.0);
+/// assert_eq!(a, variety_bias(&[(0, 0), (5, 1)], 3, 7, 100.0));
+/// assert!(a.iter().all(|&c| (0.0..100.0).contains(&c)));
+/// assert_ne!(a, variety_bias(&[(0, 0), (5, 1)], 3, 8, 100.0));
+/// ```
+pub fn variety_bias(positions: &[Position], piece: usize, seed: u64, amount: f64) -> Vec<f64> {
+    // SplitMix64: a well-mixed hash of piece, position and seed.
+    let mix = |mut z: u64| {
+        z = (z ^ (z >> 30)).wrapping_mul(0xbf58_476d_1ce4_e5b9);
+        z = (z ^ (z >> 27)).wrapping_mul(0x94d0_49bb_1331_11eb);
+        z ^ (z >> 31)
+    };
+    let base = mix(seed.wrapping_add(0x9e37_79b9_7f4a_7c15).wrapping_mul(piece as u64 + 1));
+    positions
+        .iter()
+        .map(|&(x, y)| {
+            let h = mix(base ^ (u64::from(x as u32) << 32 | u64::from(y as u32)));
+            amount * (h >> 11) as f64 / (1u64 << 53) as f64
+        })
+        .collect()
 }

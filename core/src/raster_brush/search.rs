@@ -304,9 +304,12 @@ fn fill(
 ) -> Result<Table, RasterError> {
     let n = placements.len();
     let rows = if closed { n + 1 } else { n };
+    let bias = |row: usize, k: usize| placements[row].bias.get(k).copied().unwrap_or(0.0);
     let mut p: Vec<f64> = match start {
-        None => vec![0.0; placements[0].positions.len()],
-        Some(s) => (0..placements[0].positions.len()).map(|k| if k == s { 0.0 } else { f64::INFINITY }).collect(),
+        None => (0..placements[0].positions.len()).map(|k| bias(0, k)).collect(),
+        Some(s) => {
+            (0..placements[0].positions.len()).map(|k| if k == s { bias(0, k) } else { f64::INFINITY }).collect()
+        }
     };
     let mut args = Vec::with_capacity(rows);
     let mut right = EdgeTable::right(exemplar, &placements[0].positions, &samples[0]);
@@ -320,7 +323,14 @@ fn fill(
             positions: &placements[piece].positions,
             step: samples[i - 1].step(),
         };
-        let (next, arg) = relax(row, &right, &left);
+        let (mut next, arg) = relax(row, &right, &left);
+        // A loop's terminal is the first piece again, whose own cost is
+        // already in the first row.
+        if i < n && !placements[piece].bias.is_empty() {
+            for (k, cost) in next.iter_mut().enumerate() {
+                *cost += bias(piece, k);
+            }
+        }
         args.push(arg);
         p = next;
         if i < n {

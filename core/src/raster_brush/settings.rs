@@ -28,11 +28,22 @@ pub struct Settings {
     pub stitching: bool,
     /// Printed thickness of the traced outline, mm.
     pub thickness_mm: f64,
+    /// Variety: how much a random cost per piece and position (up to
+    /// `variety` × [`VARIETY_COST`]) moves the search off its single best
+    /// answer, so that where the pattern jumps in the exemplar changes
+    /// along the curve; 0 turns it off.
+    pub variety: f64,
+    /// Which random costs variety draws: another seed, another pattern.
+    pub seed: u64,
 }
+
+/// The random cost per piece at variety 1: half a jump, so that variety
+/// alone never breaks a continuation but decides between near ties.
+pub const VARIETY_COST: f64 = 0.5 * super::JUMP_COST;
 
 impl Default for Settings {
     fn default() -> Self {
-        Settings { band_mm: 10.0, step_mm: 2.0, scale: 0.75, stitching: true, thickness_mm: 2.0 }
+        Settings { band_mm: 10.0, step_mm: 2.0, scale: 0.75, stitching: true, thickness_mm: 2.0, variety: 0.5, seed: 0 }
     }
 }
 
@@ -58,6 +69,9 @@ impl Settings {
         positive("the band", self.band_mm)?;
         positive("the step", self.step_mm)?;
         positive("the thickness", self.thickness_mm)?;
+        if !(self.variety.is_finite() && self.variety >= 0.0) {
+            return Err(InvalidSetting(format!("variety must be zero or more, not {}", self.variety)));
+        }
         if !(self.scale.is_finite() && self.scale > 0.0 && self.scale <= MAX_SCALE) {
             return Err(InvalidSetting(format!(
                 "the scale (the pattern's height as a fraction of the band) must be above 0 and at most {MAX_SCALE}, not {}",
