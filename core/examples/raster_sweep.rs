@@ -119,10 +119,10 @@ fn main() {
                         Some(Fact::Number(x)) => Some(*x),
                         _ => None,
                     };
-                    if let (Some(before), Some(after)) = (fact("seam_mismatch_before"), fact("seam_mismatch_after")) {
-                        if before > 0.0 {
-                            gains.push(1.0 - after / before);
-                        }
+                    if let (Some(before), Some(after)) = (fact("seam_mismatch_before"), fact("seam_mismatch_after"))
+                        && before > 0.0
+                    {
+                        gains.push(1.0 - after / before);
                     }
                     if let Some(dir) = &out
                         && let Ok(image) = render_product(&product, 6.0)
