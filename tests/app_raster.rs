@@ -78,6 +78,9 @@ fn a_raster_curve_shows_its_picture_and_leaves_painted_areas_empty() {
     assert!(textured.texture.is_some() && textured.triangles.len() > 1000);
     assert_eq!(product.topology.components, 1);
     harness.get_by_label_contains("1 component(s)");
+    // One result, so no gallery computes it a second time.
+    assert!(harness.state().gallery_state(id).is_none());
+    assert!(harness.query_by_label("Solution 1").is_none(), "no gallery thumbnails");
     harness.key_press_modifiers(Modifiers::COMMAND, Key::E);
     harness.step();
     let whole = check_stl(&dir.join("whole.stl"));

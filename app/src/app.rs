@@ -141,7 +141,7 @@ impl TraceryApp {
     /// the selected curve's solutions are.
     pub fn busy(&self) -> bool {
         self.doc.curves.iter().any(|c| self.worker.is_stale(c.id))
-            || self.selected.is_some_and(|id| self.state.show_gallery && self.gallery.is_stale(id))
+            || self.gallery_curve().is_some_and(|id| self.gallery.is_stale(id))
     }
 
     /// The latest finished product of a curve.
@@ -183,6 +183,14 @@ impl TraceryApp {
     pub(crate) fn begin_live_stroke(&mut self) {
         self.live.retain(&[]);
         self.live_session = Session::default();
+    }
+
+    /// The curve whose gallery is shown and computed: the selected one, when
+    /// the gallery is on and its mode has alternatives (a mode with one
+    /// result would only compute it a second time).
+    pub fn gallery_curve(&self) -> Option<u64> {
+        let id = self.selected.filter(|_| self.state.show_gallery)?;
+        self.doc.curve(id).filter(|c| c.mode.has_alternatives()).map(|c| c.id)
     }
 
     /// The gallery of a curve: its alternatives, the best first.
@@ -240,12 +248,13 @@ impl TraceryApp {
         }
         self.caches.refresh_smoothed(&self.doc.curves);
         let now = Instant::now();
+        let gallery_curve = self.gallery_curve();
         for item in &self.doc.curves {
             let Some(curve) = self.caches.smoothed(item.id).cloned() else { continue };
             match mode_ui(&item.mode).job(&curve, &item.mode, &self.doc, &mut self.caches) {
                 Ok(mode) => {
                     let job = CurveJob { mode, jump_rings: item.jump_rings.clone(), print: self.doc.print };
-                    if self.state.show_gallery && self.selected == Some(item.id) {
+                    if gallery_curve == Some(item.id) {
                         let best = CurveJob { mode: job.mode.best(), ..job.clone() };
                         self.gallery.want(item.id, GalleryJob { job: best, closed: item.closed }, now);
                     }
@@ -258,8 +267,7 @@ impl TraceryApp {
         let ids: Vec<u64> = self.doc.curves.iter().map(|c| c.id).collect();
         self.worker.retain(&ids);
         // Only the selected curve's gallery is worth the work.
-        let wanted: Vec<u64> = self.selected.into_iter().filter(|_| self.state.show_gallery).collect();
-        self.gallery.retain(&wanted);
+        self.gallery.retain(&Vec::from_iter(gallery_curve));
         let gallery_busy = self.gallery.poll(now);
         let live_busy = self.live.poll(now);
         if self.worker.poll(now) || gallery_busy || live_busy {
@@ -293,7 +301,7 @@ impl eframe::App for TraceryApp {
 
         egui::Panel::top("menu").show(ui, |ui| top_bar::top_bar_ui(self, ui));
         egui::Panel::bottom("status").show(ui, |ui| status::status_ui(self, ui));
-        if self.state.show_gallery && self.selected.is_some() {
+        if self.gallery_curve().is_some() {
             // A fixed height, so the layout does not jump when the solutions arrive.
             egui::Panel::bottom("gallery")
                 .resizable(false)

@@ -94,6 +94,15 @@ impl ModeSettings {
         out
     }
 
+    /// Whether the mode offers alternative solutions for the gallery.
+    pub fn has_alternatives(&self) -> bool {
+        match self {
+            ModeSettings::VectorBrush(_) => true,
+            // One result: the search is exact.
+            ModeSettings::RasterBrush(_) => false,
+        }
+    }
+
     /// Which of the gallery's solutions the curve uses (0: the best).
     pub fn alternative(&self) -> u32 {
         match self {

@@ -159,7 +159,7 @@ impl ModeJob {
     pub fn alternatives(&self, control: &Control) -> Result<Vec<Product>, JobError> {
         match self {
             ModeJob::VectorBrush(job) => Ok(job.alternatives(control)?),
-            // One result: the search is exact.
+            // One result (the app asks no gallery of it; see `ModeSettings::has_alternatives`).
             ModeJob::RasterBrush(job) => Ok(vec![job.run(control)?]),
         }
     }
