@@ -11,7 +11,7 @@ use tracery_core::mesh::Mesh;
 use crate::TraceryApp;
 use crate::command::Command;
 use crate::dialogs::FileKind;
-use crate::document::{Document, ModeSettings, RasterBrushItem, VectorBrushItem};
+use crate::document::{Document, DocumentError, ExemplarRef, ModeSettings, RasterBrushItem, VectorBrushItem};
 use crate::files::write_atomically;
 use crate::worker::JobState;
 
@@ -91,39 +91,37 @@ impl TraceryApp {
         }
     }
 
-    /// Imports an SVG exemplar from `path`; on failure the document is left as it was.
+    /// Imports an SVG exemplar from `path` for the vector brush; on failure
+    /// the document is left as it was.
     pub fn import_svg(&mut self, path: &Path) {
-        let name = path.file_name().map_or_else(|| "exemplar.svg".into(), |n| n.to_string_lossy().into_owned());
-        let text = match std::fs::read(path) {
-            Ok(bytes) => String::from_utf8_lossy(&bytes).into_owned(),
-            Err(e) => {
-                self.message = Some((format!("Could not read {}: {e}", path.display()), true));
-                return;
-            }
-        };
-        let before = self.doc.clone();
-        match self.doc.import(&name, &text) {
-            Ok(r) => {
-                self.history.record(before);
-                self.history_handled = true;
-                // An SVG exemplar is for the vector brush: the controls switch to it.
-                match self.settings_mut() {
-                    ModeSettings::VectorBrush(v) => v.exemplar = r.clone(),
-                    other => {
-                        *other =
-                            ModeSettings::VectorBrush(VectorBrushItem { exemplar: r.clone(), ..Default::default() })
-                    }
-                }
-                self.message = Some((format!("Imported '{}'", r.name()), false));
-            }
-            Err(e) => self.message = Some((format!("Could not import: {e}"), true)),
-        }
+        self.import_exemplar(path, "exemplar.svg", |doc, name, bytes| {
+            let r = doc.import(name, &String::from_utf8_lossy(bytes))?;
+            // An SVG exemplar is for the vector brush: the controls switch to it.
+            Ok((r.clone(), VectorBrushItem { exemplar: r, ..Default::default() }.into()))
+        });
     }
 
     /// Imports a PNG exemplar from `path` for the raster brush; on failure
     /// the document is left as it was.
     pub fn import_png(&mut self, path: &Path) {
-        let name = path.file_name().map_or_else(|| "exemplar.png".into(), |n| n.to_string_lossy().into_owned());
+        self.import_exemplar(path, "exemplar.png", |doc, name, bytes| {
+            let r = doc.import_png(name, bytes)?;
+            // A PNG exemplar is for the raster brush: the controls switch to it.
+            Ok((r.clone(), RasterBrushItem { exemplar: r, ..Default::default() }.into()))
+        });
+    }
+
+    /// Reads `path` and hands it to `import`, which adds it to the document
+    /// and gives the settings of the mode that uses it; those replace the
+    /// controls' settings unless they are of that mode already (then only
+    /// the exemplar changes). One undo step; on failure nothing changes.
+    fn import_exemplar(
+        &mut self,
+        path: &Path,
+        fallback_name: &str,
+        import: impl FnOnce(&mut Document, &str, &[u8]) -> Result<(ExemplarRef, ModeSettings), DocumentError>,
+    ) {
+        let name = path.file_name().map_or_else(|| fallback_name.into(), |n| n.to_string_lossy().into_owned());
         let bytes = match std::fs::read(path) {
             Ok(bytes) => bytes,
             Err(e) => {
@@ -132,17 +130,15 @@ impl TraceryApp {
             }
         };
         let before = self.doc.clone();
-        match self.doc.import_png(&name, &bytes) {
-            Ok(r) => {
+        match import(&mut self.doc, &name, &bytes) {
+            Ok((r, fresh)) => {
                 self.history.record(before);
                 self.history_handled = true;
-                // A PNG exemplar is for the raster brush: the controls switch to it.
-                match self.settings_mut() {
-                    ModeSettings::RasterBrush(v) => v.exemplar = r.clone(),
-                    other => {
-                        *other =
-                            ModeSettings::RasterBrush(RasterBrushItem { exemplar: r.clone(), ..Default::default() })
-                    }
+                let settings = self.settings_mut();
+                if std::mem::discriminant(settings) == std::mem::discriminant(&fresh) {
+                    *settings.exemplar_mut() = r.clone();
+                } else {
+                    *settings = fresh;
                 }
                 self.message = Some((format!("Imported '{}'", r.name()), false));
             }

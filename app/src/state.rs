@@ -128,15 +128,24 @@ pub struct Avoided {
     pub triangles: Vec<[DVec2; 3]>,
 }
 
+/// The value `cache` holds for `r`, loaded and kept the first time.
+fn load_once<T>(
+    cache: &mut HashMap<ExemplarRef, Arc<T>>,
+    r: &ExemplarRef,
+    load: impl FnOnce() -> Result<T, DocumentError>,
+) -> Result<Arc<T>, DocumentError> {
+    if let Some(e) = cache.get(r) {
+        return Ok(e.clone());
+    }
+    let e = Arc::new(load()?);
+    cache.insert(r.clone(), e.clone());
+    Ok(e)
+}
+
 impl Caches {
     /// The exemplar a reference names, loaded once.
     pub fn exemplar(&mut self, doc: &Document, r: &ExemplarRef) -> Result<Arc<Exemplar>, DocumentError> {
-        if let Some(e) = self.exemplars.get(r) {
-            return Ok(e.clone());
-        }
-        let e = Arc::new(doc.exemplar(r)?);
-        self.exemplars.insert(r.clone(), e.clone());
-        Ok(e)
+        load_once(&mut self.exemplars, r, || doc.exemplar(r))
     }
 
     /// The picture of an exemplar cut with `slicing`, made once.
@@ -151,12 +160,7 @@ impl Caches {
 
     /// The raster exemplar a reference names, loaded once.
     pub fn raster_exemplar(&mut self, doc: &Document, r: &ExemplarRef) -> Result<Arc<RasterExemplar>, DocumentError> {
-        if let Some(e) = self.raster_exemplars.get(r) {
-            return Ok(e.clone());
-        }
-        let e = Arc::new(doc.raster_exemplar(r)?);
-        self.raster_exemplars.insert(r.clone(), e.clone());
-        Ok(e)
+        load_once(&mut self.raster_exemplars, r, || doc.raster_exemplar(r))
     }
 
     /// `texture` uploaded for drawing, once for as long as something holds it.

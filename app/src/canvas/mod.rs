@@ -8,7 +8,7 @@ mod view;
 
 pub use grid::grid_ui;
 pub use hit::distance_to;
-pub use paint::{fill, fill_fitted, polyline};
+pub use paint::{fill, fill_fitted, polyline, shaded_region};
 pub use view::{MAX_POINTS_PER_MM, MIN_POINTS_PER_MM, View};
 
 use egui::{Color32, PointerButton, Sense, Stroke};
@@ -16,7 +16,7 @@ use tracery_core::DVec2;
 
 use crate::TraceryApp;
 use crate::modes;
-use crate::tools::avoid::AvoidDrag;
+use crate::tools::avoid::painted;
 use crate::tools::edit::{EditDrag, PICK_RADIUS_POINTS};
 use crate::tools::{Gesture, Tool, draw, pan};
 
@@ -72,7 +72,7 @@ pub fn canvas_ui(app: &mut TraceryApp, ui: &mut egui::Ui) {
         if app.state.tool == Tool::Ring {
             app.add_jump_ring_at(p);
         } else if app.state.tool == Tool::Avoid {
-            app.doc.avoid.push(AvoidDrag::begin(p).finish(app.state.avoid_width_mm));
+            app.doc.avoid.push(painted(&draw::Stroke::begin(p), app.state.avoid_width_mm));
         } else {
             app.selected = curve_at(app, p, SELECT_RADIUS_POINTS / f64::from(view.points_per_mm));
         }
@@ -88,10 +88,8 @@ fn paint_avoided(app: &mut TraceryApp, painter: &egui::Painter, rect: egui::Rect
     }
     let view = app.state.view;
     let avoided = app.caches.avoided(&app.doc.avoid);
-    painter.add(fill(&view, rect, &avoided.triangles, AVOIDED));
-    for ring in avoided.region.rings() {
-        painter.add(polyline(&view, rect, ring, true, Stroke::new(1.0, Color32::from_rgb(200, 60, 60))));
-    }
+    let edge = Color32::from_rgb(200, 60, 60);
+    paint::shaded_region(painter, &view, rect, &avoided.region, &avoided.triangles, AVOIDED, edge);
 }
 
 fn handle_gestures(app: &mut TraceryApp, ui: &egui::Ui, response: &egui::Response) {
@@ -114,7 +112,7 @@ fn handle_gestures(app: &mut TraceryApp, ui: &egui::Ui, response: &egui::Respons
             Tool::Pan => Some(Gesture::Pan(pan::Pan)),
             // The ring tool acts on clicks only.
             Tool::Ring => None,
-            Tool::Avoid => Some(Gesture::Avoid(AvoidDrag::begin(p))),
+            Tool::Avoid => Some(Gesture::Avoid(draw::Stroke::begin(p))),
             Tool::Edit => {
                 let found =
                     EditDrag::begin(&app.doc, app.selected, p, tolerance_mm, |q| curve_at(app, q, tolerance_mm));
@@ -128,12 +126,7 @@ fn handle_gestures(app: &mut TraceryApp, ui: &egui::Ui, response: &egui::Respons
     if response.dragged() {
         match &mut app.gesture {
             Some(Gesture::Pan(pan)) => pan.drag(&mut app.state.view, response.drag_delta()),
-            Some(Gesture::Stroke(stroke)) => {
-                if let Some(p) = pointer.map(world) {
-                    stroke.extend(p);
-                }
-            }
-            Some(Gesture::Avoid(stroke)) => {
+            Some(Gesture::Stroke(stroke) | Gesture::Avoid(stroke)) => {
                 if let Some(p) = pointer.map(world) {
                     stroke.extend(p);
                 }
@@ -153,7 +146,7 @@ fn handle_gestures(app: &mut TraceryApp, ui: &egui::Ui, response: &egui::Respons
                     app.add_curve(points, closed);
                 }
             }
-            Some(Gesture::Avoid(stroke)) => app.doc.avoid.push(stroke.finish(app.state.avoid_width_mm)),
+            Some(Gesture::Avoid(stroke)) => app.doc.avoid.push(painted(&stroke, app.state.avoid_width_mm)),
             _ => {}
         }
         app.gesture = None;

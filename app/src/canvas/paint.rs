@@ -27,6 +27,23 @@ pub fn fill(view: &View, rect: Rect, triangles: &[[DVec2; 3]], color: Color32) -
     Shape::mesh(mesh)
 }
 
+/// A region (mm) shaded with `fill_colour` over its `triangles` and outlined
+/// in `edge`, one point wide.
+pub fn shaded_region(
+    painter: &egui::Painter,
+    view: &View,
+    rect: Rect,
+    region: &tracery_core::geom::Region,
+    triangles: &[[DVec2; 3]],
+    fill_colour: Color32,
+    edge: Color32,
+) {
+    painter.add(fill(view, rect, triangles, fill_colour));
+    for ring in region.rings() {
+        painter.add(polyline(view, rect, ring, true, Stroke::new(1.0, edge)));
+    }
+}
+
 /// Textured triangles in world coordinates, tinted (white shows the picture
 /// as it is); without a texture, drawn in the tint.
 pub fn textured(

@@ -66,6 +66,18 @@ pub enum ModeSettings {
     RasterBrush(RasterBrushItem),
 }
 
+impl From<VectorBrushItem> for ModeSettings {
+    fn from(item: VectorBrushItem) -> Self {
+        ModeSettings::VectorBrush(item)
+    }
+}
+
+impl From<RasterBrushItem> for ModeSettings {
+    fn from(item: RasterBrushItem) -> Self {
+        ModeSettings::RasterBrush(item)
+    }
+}
+
 impl Default for ModeSettings {
     fn default() -> Self {
         ModeSettings::VectorBrush(VectorBrushItem::default())
@@ -92,6 +104,14 @@ impl ModeSettings {
             ModeSettings::RasterBrush(_) => {}
         }
         out
+    }
+
+    /// The exemplar the mode draws with.
+    pub fn exemplar_mut(&mut self) -> &mut ExemplarRef {
+        match self {
+            ModeSettings::VectorBrush(v) => &mut v.exemplar,
+            ModeSettings::RasterBrush(r) => &mut r.exemplar,
+        }
     }
 
     /// Whether the mode offers alternative solutions for the gallery.
@@ -215,6 +235,24 @@ impl Default for Document {
     }
 }
 
+/// An imported exemplar's name from its file's name.
+fn file_stem(file_name: &str) -> String {
+    std::path::Path::new(file_name)
+        .file_stem()
+        .map_or_else(|| "imported".to_string(), |s| s.to_string_lossy().into_owned())
+}
+
+/// `base`, or `base 2`, `base 3`… : the first that `taken` does not claim.
+fn unique_name(base: &str, taken: impl Fn(&str) -> bool) -> String {
+    let mut name = base.to_string();
+    let mut k = 2;
+    while taken(&name) {
+        name = format!("{base} {k}");
+        k += 1;
+    }
+    name
+}
+
 /// Only the version, to decide how to read the rest.
 #[derive(Deserialize)]
 struct VersionProbe {
@@ -261,17 +299,12 @@ impl Document {
 
     /// Imports an SVG exemplar, checking it loads; returns its reference.
     pub fn import(&mut self, file_name: &str, svg: &str) -> Result<ExemplarRef, DocumentError> {
-        let base = std::path::Path::new(file_name)
-            .file_stem()
-            .map_or_else(|| "imported".to_string(), |s| s.to_string_lossy().into_owned());
+        let base = file_stem(file_name);
         Exemplar::from_svg_str(base.clone(), svg, &LoadOptions::default())
             .map_err(|e| DocumentError::Exemplar(format!("{file_name}: {e}")))?;
-        let mut name = base.clone();
-        let mut k = 2;
-        while self.imported.iter().any(|e| e.name == name) || vector_brush::BUILTIN_NAMES.contains(&name.as_str()) {
-            name = format!("{base} {k}");
-            k += 1;
-        }
+        let name = unique_name(&base, |n| {
+            self.imported.iter().any(|e| e.name == n) || vector_brush::BUILTIN_NAMES.contains(&n)
+        });
         self.imported.push(ImportedExemplar { name: name.clone(), svg: svg.to_string() });
         Ok(ExemplarRef::Imported(name))
     }

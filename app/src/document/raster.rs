@@ -9,7 +9,7 @@ use tracery_core::DVec2;
 use tracery_core::geom::{Region, brush_stroke, union};
 use tracery_core::raster_brush::{self, RasterExemplar};
 
-use super::{Document, DocumentError, ExemplarRef};
+use super::{Document, DocumentError, ExemplarRef, file_stem, unique_name};
 
 /// The raster exemplar a new raster curve starts with.
 pub const DEFAULT_RASTER_EXEMPLAR: &str = "rope";
@@ -96,18 +96,11 @@ impl Document {
 
     /// Imports a PNG exemplar, checking it loads; returns its reference.
     pub fn import_png(&mut self, file_name: &str, png: &[u8]) -> Result<ExemplarRef, DocumentError> {
-        let base = std::path::Path::new(file_name)
-            .file_stem()
-            .map_or_else(|| "imported".to_string(), |s| s.to_string_lossy().into_owned());
+        let base = file_stem(file_name);
         RasterExemplar::from_png(&base, png).map_err(|e| DocumentError::Exemplar(format!("{file_name}: {e}")))?;
-        let mut name = base.clone();
-        let mut k = 2;
-        while self.imported_raster.iter().any(|e| e.name == name)
-            || raster_brush::BUILTIN_NAMES.contains(&name.as_str())
-        {
-            name = format!("{base} {k}");
-            k += 1;
-        }
+        let name = unique_name(&base, |n| {
+            self.imported_raster.iter().any(|e| e.name == n) || raster_brush::BUILTIN_NAMES.contains(&n)
+        });
         self.imported_raster.push(ImportedRaster { name: name.clone(), png: png.to_vec() });
         Ok(ExemplarRef::Imported(name))
     }

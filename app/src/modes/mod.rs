@@ -102,6 +102,13 @@ pub trait ModeUi: Sync {
     ) -> Result<ModeJob, DocumentError>;
 }
 
+/// Whether two shared values are equal: the same pointer first, which is
+/// how a job asked for again each frame usually compares (curves and
+/// exemplars are immutable once made), then by value.
+pub fn same<T: PartialEq + ?Sized>(a: &Arc<T>, b: &Arc<T>) -> bool {
+    Arc::ptr_eq(a, b) || a == b
+}
+
 /// Every mode, in picker order.
 pub static REGISTRY: &[&dyn ModeUi] = &[&vector_brush::VectorBrushUi, &raster_brush::RasterBrushUi];
 

@@ -3,21 +3,24 @@
 
 use std::sync::Arc;
 
-use egui::{Color32, RichText, Stroke};
+use egui::{Color32, RichText};
 use tracery_core::Product;
 use tracery_core::control::Control;
 use tracery_core::curve::{Along, Curve};
 use tracery_core::geom::{Region, fill_triangles};
 use tracery_core::raster_brush::{BUILTIN_NAMES, MAX_SCALE, RasterError, RasterExemplar, Settings, make_product};
 
-use super::{ModeEnv, ModeJob, ModeUi, OverlayToggles};
-use crate::canvas::{View, fill, polyline};
+use super::{ModeEnv, ModeJob, ModeUi, OverlayToggles, same};
+use crate::canvas::{View, shaded_region};
 use crate::command::Command;
 use crate::document::{Document, DocumentError, ExemplarRef, ModeSettings, RasterBrushItem};
+use crate::panels::exemplar_picker::thumbnail_grid_ui;
 use crate::state::Caches;
 
 /// Largest thumbnail, points; each keeps its exemplar's proportions.
 const THUMBNAIL: egui::Vec2 = egui::vec2(110.0, 34.0);
+/// Room between a thumbnail and its frame, points.
+const THUMBNAIL_MARGIN: f32 = 2.0;
 /// Where a raster pattern may not go: fold-overs of its ribbon and avoided areas.
 pub const INVALID: Color32 = Color32::from_rgba_premultiplied(120, 60, 0, 70);
 /// The outline of those areas.
@@ -41,13 +44,10 @@ pub struct RasterBrushJob {
 
 impl PartialEq for RasterBrushJob {
     fn eq(&self, other: &Self) -> bool {
-        // Curves, exemplars and avoided areas are immutable once made: the
-        // same pointer is the same value, and comparing pointers first keeps
-        // asking the worker again each frame cheap.
-        (Arc::ptr_eq(&self.curve, &other.curve) || self.curve == other.curve)
+        same(&self.curve, &other.curve)
             && self.settings == other.settings
-            && (Arc::ptr_eq(&self.exemplar, &other.exemplar) || self.exemplar == other.exemplar)
-            && (Arc::ptr_eq(&self.avoid_mm, &other.avoid_mm) || self.avoid_mm == other.avoid_mm)
+            && same(&self.exemplar, &other.exemplar)
+            && same(&self.avoid_mm, &other.avoid_mm)
     }
 }
 
@@ -61,9 +61,10 @@ impl RasterBrushJob {
 
 /// One exemplar's thumbnail, its proportions kept; clicked to choose it.
 fn thumbnail_ui(ui: &mut egui::Ui, env: &mut ModeEnv<'_>, r: &ExemplarRef) -> egui::Response {
-    let exemplar = env.caches.raster_exemplar(env.doc, r);
-    let Ok(exemplar) = exemplar else {
-        let (rect, response) = ui.allocate_exact_size(THUMBNAIL, egui::Sense::click());
+    let (rect, response) =
+        ui.allocate_exact_size(THUMBNAIL + egui::Vec2::splat(2.0 * THUMBNAIL_MARGIN), egui::Sense::click());
+    let rect = rect.shrink(THUMBNAIL_MARGIN);
+    let Ok(exemplar) = env.caches.raster_exemplar(env.doc, r) else {
         let font = egui::FontId::proportional(14.0);
         ui.painter().text(rect.center(), egui::Align2::CENTER_CENTER, "?", font, Color32::RED);
         return response;
@@ -71,7 +72,6 @@ fn thumbnail_ui(ui: &mut egui::Ui, env: &mut ModeEnv<'_>, r: &ExemplarRef) -> eg
     let (w, h) = (exemplar.width() as f32, exemplar.height() as f32);
     let scale = (THUMBNAIL.x / w).min(THUMBNAIL.y / h);
     let texture = env.caches.texture(ui.ctx(), &exemplar.texture);
-    let (rect, response) = ui.allocate_exact_size(THUMBNAIL, egui::Sense::click());
     let image = egui::Rect::from_center_size(rect.center(), egui::vec2(w * scale, h * scale));
     let uv = egui::Rect::from_min_max(egui::pos2(0.0, 0.0), egui::pos2(1.0, 1.0));
     ui.painter().image(texture, image, uv, Color32::WHITE);
@@ -83,27 +83,7 @@ fn raster_picker_ui(ui: &mut egui::Ui, chosen: &mut ExemplarRef, env: &mut ModeE
     ui.label(RichText::new("Exemplar").strong());
     let mut refs: Vec<ExemplarRef> = BUILTIN_NAMES.iter().map(|n| ExemplarRef::Builtin(n.to_string())).collect();
     refs.extend(env.doc.imported_raster.iter().map(|e| ExemplarRef::Imported(e.name.clone())));
-    egui::Grid::new("raster exemplars").num_columns(2).spacing([6.0, 6.0]).show(ui, |ui| {
-        for (k, r) in refs.iter().enumerate() {
-            let is_chosen = r == chosen;
-            ui.vertical(|ui| {
-                let stroke = if is_chosen {
-                    Stroke::new(2.0, ui.visuals().selection.bg_fill)
-                } else {
-                    Stroke::new(1.0, ui.visuals().widgets.noninteractive.bg_stroke.color)
-                };
-                let frame = egui::Frame::new().stroke(stroke).corner_radius(4.0).inner_margin(2.0);
-                let response = frame.show(ui, |ui| thumbnail_ui(ui, env, r)).inner;
-                let label = ui.selectable_label(is_chosen, r.name());
-                if response.clicked() || label.clicked() {
-                    *chosen = r.clone();
-                }
-            });
-            if k % 2 == 1 {
-                ui.end_row();
-            }
-        }
-    });
+    thumbnail_grid_ui(ui, "raster exemplars", &refs, chosen, |ui, r| thumbnail_ui(ui, env, r));
     if ui.button(Command::ImportPng.label()).on_hover_text("Or drop a PNG with transparency on the window").clicked() {
         env.commands.push(Command::ImportPng);
     }
@@ -164,10 +144,7 @@ impl ModeUi for RasterBrushUi {
     ) {
         if toggles.invalid {
             let invalid = &product.overlays.avoided_mm;
-            painter.add(fill(view, rect, &fill_triangles(invalid), INVALID));
-            for ring in invalid.rings() {
-                painter.add(polyline(view, rect, ring, true, Stroke::new(1.0, INVALID_EDGE)));
-            }
+            shaded_region(painter, view, rect, invalid, &fill_triangles(invalid), INVALID, INVALID_EDGE);
         }
         super::band_and_seams_ui(painter, view, rect, product, toggles);
     }

@@ -10,7 +10,7 @@ use tracery_core::vector_brush::{
     ALTERNATIVES, Exemplar, Settings, SlicingMode, SynthesisError, Target, make_alternatives, make_product,
 };
 
-use super::{ModeEnv, ModeJob, ModeUi};
+use super::{ModeEnv, ModeJob, ModeUi, same};
 use crate::command::Command;
 use crate::document::{Document, DocumentError, ModeSettings, VectorBrushItem};
 use crate::panels::exemplar_picker::exemplar_picker_ui;
@@ -35,10 +35,7 @@ pub struct VectorBrushJob {
 
 impl PartialEq for VectorBrushJob {
     fn eq(&self, other: &Self) -> bool {
-        // Curves and exemplars are immutable once made: the same pointer is the same value.
-        (Arc::ptr_eq(&self.curve, &other.curve) || self.curve == other.curve)
-            && self.settings == other.settings
-            && (Arc::ptr_eq(&self.exemplar, &other.exemplar) || self.exemplar == other.exemplar)
+        same(&self.curve, &other.curve) && self.settings == other.settings && same(&self.exemplar, &other.exemplar)
     }
 }
 

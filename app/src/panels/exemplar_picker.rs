@@ -69,12 +69,17 @@ fn exemplar_picture_ui(
     response
 }
 
-/// The picker: a grid of thumbnails, import, and the cut view of the chosen exemplar.
-pub fn exemplar_picker_ui(ui: &mut egui::Ui, chosen: &mut ExemplarRef, slicing: SlicingMode, env: &mut ModeEnv<'_>) {
-    ui.label(RichText::new("Exemplar").strong());
-    let mut refs: Vec<ExemplarRef> = BUILTIN_NAMES.iter().map(|n| ExemplarRef::Builtin(n.to_string())).collect();
-    refs.extend(env.doc.imported.iter().map(|e| ExemplarRef::Imported(e.name.clone())));
-    egui::Grid::new("exemplars").num_columns(2).spacing([6.0, 6.0]).show(ui, |ui| {
+/// Exemplars as a grid of thumbnails, two to a row, each framed (the chosen
+/// one highlighted) above its name; a click on either chooses it.
+/// `thumbnail` draws one and returns its response. Shared by every mode's picker.
+pub fn thumbnail_grid_ui(
+    ui: &mut egui::Ui,
+    id_salt: &str,
+    refs: &[ExemplarRef],
+    chosen: &mut ExemplarRef,
+    mut thumbnail: impl FnMut(&mut egui::Ui, &ExemplarRef) -> egui::Response,
+) {
+    egui::Grid::new(id_salt).num_columns(2).spacing([6.0, 6.0]).show(ui, |ui| {
         for (k, r) in refs.iter().enumerate() {
             let is_chosen = r == chosen;
             ui.vertical(|ui| {
@@ -84,8 +89,7 @@ pub fn exemplar_picker_ui(ui: &mut egui::Ui, chosen: &mut ExemplarRef, slicing: 
                     Stroke::new(1.0, ui.visuals().widgets.noninteractive.bg_stroke.color)
                 };
                 let frame = egui::Frame::new().stroke(stroke).corner_radius(4.0);
-                let response =
-                    frame.show(ui, |ui| exemplar_picture_ui(ui, env, r, SlicingMode::Topology, THUMBNAIL, false)).inner;
+                let response = frame.show(ui, |ui| thumbnail(ui, r)).inner;
                 let label = ui.selectable_label(is_chosen, r.name());
                 if response.clicked() || label.clicked() {
                     *chosen = r.clone();
@@ -95,6 +99,16 @@ pub fn exemplar_picker_ui(ui: &mut egui::Ui, chosen: &mut ExemplarRef, slicing: 
                 ui.end_row();
             }
         }
+    });
+}
+
+/// The picker: a grid of thumbnails, import, and the cut view of the chosen exemplar.
+pub fn exemplar_picker_ui(ui: &mut egui::Ui, chosen: &mut ExemplarRef, slicing: SlicingMode, env: &mut ModeEnv<'_>) {
+    ui.label(RichText::new("Exemplar").strong());
+    let mut refs: Vec<ExemplarRef> = BUILTIN_NAMES.iter().map(|n| ExemplarRef::Builtin(n.to_string())).collect();
+    refs.extend(env.doc.imported.iter().map(|e| ExemplarRef::Imported(e.name.clone())));
+    thumbnail_grid_ui(ui, "exemplars", &refs, chosen, |ui, r| {
+        exemplar_picture_ui(ui, env, r, SlicingMode::Topology, THUMBNAIL, false)
     });
     if ui.button(Command::ImportSvg.label()).on_hover_text("Or drop an SVG file on the window").clicked() {
         env.commands.push(Command::ImportSvg);

@@ -50,5 +50,5 @@ pub enum Gesture {
     /// The view being dragged.
     Pan(pan::Pan),
     /// An area being painted with the avoidance brush.
-    Avoid(avoid::AvoidDrag),
+    Avoid(draw::Stroke),
 }
