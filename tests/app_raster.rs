@@ -7,8 +7,11 @@ use tracery::dialogs::FileKind;
 use tracery::document::{ExemplarRef, ModeSettings};
 use tracery_core::DVec2;
 
+#[path = "common/cli.rs"]
+mod cli;
 #[path = "common/drive.rs"]
 mod drive;
+use cli::tempdir;
 #[path = "common/stl.rs"]
 mod stl;
 #[path = "common/ui.rs"]
@@ -16,13 +19,6 @@ mod ui;
 use drive::{click_in_side_panel, drag, harness};
 use stl::check_stl;
 use ui::settle;
-
-fn tempdir(name: &str) -> std::path::PathBuf {
-    let dir = std::env::temp_dir().join(format!("tracery-test-{}-{name}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&dir);
-    std::fs::create_dir_all(&dir).unwrap();
-    dir
-}
 
 /// Switches the controls to the raster brush through the mode picker.
 fn choose_raster_mode(harness: &mut egui_kittest::Harness<'static, tracery::TraceryApp>) {

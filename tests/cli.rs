@@ -1,10 +1,8 @@
 //! The `tracery` command as a person runs it.
 
-use std::process::Command;
-
-fn tracery() -> Command {
-    Command::new(env!("CARGO_BIN_EXE_tracery"))
-}
+#[path = "common/cli.rs"]
+mod cli;
+use cli::tracery;
 
 #[test]
 fn list_prints_every_builtin() {

@@ -3,30 +3,14 @@
 //! STL must be closed with one shell per component counted in the report,
 //! and bad input must fail with one line and leave no file.
 
-use std::process::Command;
-
+#[path = "common/cli.rs"]
+mod cli;
 #[path = "common/stl.rs"]
 mod stl;
 #[path = "common/threemf.rs"]
 mod threemf;
+use cli::{field, tempdir, tracery};
 use stl::check_stl;
-
-fn tracery() -> Command {
-    Command::new(env!("CARGO_BIN_EXE_tracery"))
-}
-
-fn tempdir(name: &str) -> std::path::PathBuf {
-    let dir = std::env::temp_dir().join(format!("tracery-test-{}-{name}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&dir);
-    std::fs::create_dir_all(&dir).unwrap();
-    dir
-}
-
-fn field(json: &str, name: &str) -> String {
-    let key = format!("\"{name}\": ");
-    let start = json.find(&key).unwrap_or_else(|| panic!("no {name} in report")) + key.len();
-    json[start..].split([',', '\n']).next().unwrap().trim().trim_matches('"').to_string()
-}
 
 #[test]
 fn a_raster_rope_prints_and_renders() {

@@ -7,13 +7,15 @@ use egui_kittest::Harness;
 use egui_kittest::kittest::Queryable;
 use std::path::Path;
 use tracery::TraceryApp;
-use tracery::dialogs::ScriptedDialogs;
 use tracery::document::{ExemplarRef, ModeSettings, VectorBrushItem};
 use tracery_core::DVec2;
 use tracery_core::vector_brush::Target;
 
+#[path = "common/drive.rs"]
+mod drive;
 #[path = "common/ui.rs"]
 mod ui;
+use drive::rendered_window;
 use ui::settle;
 
 fn save(harness: &mut Harness<'static, TraceryApp>, name: &str) {
@@ -26,10 +28,7 @@ fn save(harness: &mut Harness<'static, TraceryApp>, name: &str) {
 #[test]
 #[ignore = "writes screenshots/; run on purpose"]
 fn regenerate_screenshots() {
-    let mut harness = Harness::builder()
-        .with_size(egui::vec2(1280.0, 800.0))
-        .wgpu()
-        .build_eframe(|_| TraceryApp::with(Box::new(ScriptedDialogs::default()), None));
+    let mut harness = rendered_window();
     {
         let app = harness.state_mut();
         let bracelet: Vec<DVec2> = (0..24)
@@ -64,10 +63,7 @@ fn regenerate_screenshots() {
 #[ignore = "writes screenshots/; run on purpose"]
 fn regenerate_raster_screenshot() {
     use tracery::document::{AvoidStroke, RasterBrushItem};
-    let mut harness = Harness::builder()
-        .with_size(egui::vec2(1280.0, 800.0))
-        .wgpu()
-        .build_eframe(|_| TraceryApp::with(Box::new(ScriptedDialogs::default()), None));
+    let mut harness = rendered_window();
     {
         let app = harness.state_mut();
         let raster = |name: &str| {

@@ -15,8 +15,11 @@ use tracery::modes::{ModeEnv, REGISTRY};
 use tracery::panels::{files, preview_3d, side_panel, status, top_bar};
 use tracery_core::DVec2;
 
+#[path = "common/drive.rs"]
+mod drive;
 #[path = "common/ui.rs"]
 mod ui;
+use drive::rendered_window;
 use ui::settle;
 
 /// Per-pixel colour difference tolerated (kittest's default).
@@ -98,10 +101,7 @@ fn every_mode_settings() {
 /// status with the counted topology, and the 3D preview.
 #[test]
 fn whole_window_with_a_pattern() {
-    let mut harness = Harness::builder()
-        .with_size(egui::vec2(1280.0, 800.0))
-        .wgpu()
-        .build_eframe(|_| TraceryApp::with(Box::new(ScriptedDialogs::default()), None));
+    let mut harness = rendered_window();
     {
         let app = harness.state_mut();
         let ring: Vec<DVec2> = (0..24)

@@ -3,25 +3,16 @@
 //! targets, the STL must be a closed 2-manifold with one shell per component,
 //! and the SVG, loaded back as an exemplar, must have the same topology.
 
-use std::process::Command;
-
+#[path = "common/cli.rs"]
+mod cli;
 #[path = "common/stl.rs"]
 mod stl;
 #[path = "common/threemf.rs"]
 mod threemf;
+use cli::{field, tempdir, tracery};
 use stl::check_stl;
 
 use tracery_core::vector_brush::{BUILTIN_NAMES, Exemplar, LoadOptions};
-
-fn tracery() -> Command {
-    Command::new(env!("CARGO_BIN_EXE_tracery"))
-}
-
-fn field(json: &str, name: &str) -> String {
-    let key = format!("\"{name}\": ");
-    let start = json.find(&key).unwrap_or_else(|| panic!("no {name} in report")) + key.len();
-    json[start..].split([',', '\n']).next().unwrap().trim().trim_matches('"').to_string()
-}
 
 #[test]
 fn every_builtin_along_lines_loops_and_waves() {
@@ -248,11 +239,4 @@ fn synth_report(args: &[&str], report: &std::path::Path) -> String {
     let out = tracery().arg("synth").args(args).arg("--report").arg(report).output().unwrap();
     assert!(out.status.success(), "{args:?}: {}", String::from_utf8_lossy(&out.stderr));
     std::fs::read_to_string(report).unwrap()
-}
-
-fn tempdir(name: &str) -> std::path::PathBuf {
-    let dir = std::env::temp_dir().join(format!("tracery-test-{}-{name}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&dir);
-    std::fs::create_dir_all(&dir).unwrap();
-    dir
 }

@@ -17,6 +17,15 @@ pub fn harness(answers: Vec<(FileKind, PathBuf)>) -> Harness<'static, TraceryApp
         .build_eframe(move |_| TraceryApp::with(Box::new(ScriptedDialogs { answers }), None))
 }
 
+/// The app in a 1280 x 800 window rendered through wgpu (lavapipe where
+/// there is no GPU), for pictures of the whole window; dialogs answer nothing.
+pub fn rendered_window() -> Harness<'static, TraceryApp> {
+    Harness::builder()
+        .with_size(egui::vec2(1280.0, 800.0))
+        .wgpu()
+        .build_eframe(|_| TraceryApp::with(Box::new(ScriptedDialogs::default()), None))
+}
+
 /// Presses or releases the primary button at `pos`.
 pub fn press(harness: &Harness<'static, TraceryApp>, pos: Pos2, pressed: bool) {
     harness.event(Event::PointerButton { pos, button: PointerButton::Primary, pressed, modifiers: Modifiers::NONE });

@@ -1,0 +1,26 @@
+//! Running the `tracery` command in tests: the binary, a fresh folder for
+//! its files, and fields of its JSON report.
+#![allow(dead_code)]
+
+use std::path::PathBuf;
+use std::process::Command;
+
+/// The `tracery` binary built for these tests.
+pub fn tracery() -> Command {
+    Command::new(env!("CARGO_BIN_EXE_tracery"))
+}
+
+/// An empty folder of its own for test `name`.
+pub fn tempdir(name: &str) -> PathBuf {
+    let dir = std::env::temp_dir().join(format!("tracery-test-{}-{name}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).unwrap();
+    dir
+}
+
+/// The value of the first field called `name` in a report, as text.
+pub fn field(json: &str, name: &str) -> String {
+    let key = format!("\"{name}\": ");
+    let start = json.find(&key).unwrap_or_else(|| panic!("no {name} in report")) + key.len();
+    json[start..].split([',', '\n']).next().unwrap().trim().trim_matches('"').to_string()
+}
