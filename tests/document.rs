@@ -136,7 +136,7 @@ fn a_raster_project_keeps_its_pictures_and_avoided_areas() {
     assert!(text.len() < 2 * png.len() + 2000, "{} bytes of project for a {}-byte picture", text.len(), png.len());
     let back = Document::from_ron(&text).unwrap();
     assert_eq!(back, doc);
-    assert_eq!(back.imported_raster[0].png, png);
+    assert_eq!(*back.imported_raster[0].png, *png);
     let exemplar = back.raster_exemplar(&bar_ref).unwrap();
     assert_eq!((exemplar.width(), exemplar.height()), (60, 20));
     // The avoided area is the brush's capsule: 4 mm wide around a 10.2 mm stroke.

@@ -2,6 +2,8 @@
 //! exemplars embedded as base64 text (so a project opens anywhere), and the
 //! areas painted with the avoidance brush.
 
+use std::sync::Arc;
+
 use base64::Engine as _;
 use base64::engine::general_purpose::STANDARD as BASE64;
 use serde::{Deserialize, Deserializer, Serialize, Serializer};
@@ -38,18 +40,20 @@ impl Default for RasterBrushItem {
 pub struct ImportedRaster {
     /// Name (from the file name), unique among raster exemplars.
     pub name: String,
-    /// The PNG file's bytes, written as base64 text.
+    /// The PNG file's bytes, written as base64 text. Shared: the app copies
+    /// the document every frame and keeps copies for undo, and a shared
+    /// picture costs neither a copy nor a byte-by-byte comparison there.
     #[serde(serialize_with = "to_base64", deserialize_with = "from_base64")]
-    pub png: Vec<u8>,
+    pub png: Arc<[u8]>,
 }
 
 fn to_base64<S: Serializer>(bytes: &[u8], s: S) -> Result<S::Ok, S::Error> {
     s.serialize_str(&BASE64.encode(bytes))
 }
 
-fn from_base64<'de, D: Deserializer<'de>>(d: D) -> Result<Vec<u8>, D::Error> {
+fn from_base64<'de, D: Deserializer<'de>>(d: D) -> Result<Arc<[u8]>, D::Error> {
     let text = String::deserialize(d)?;
-    BASE64.decode(text.as_bytes()).map_err(serde::de::Error::custom)
+    BASE64.decode(text.as_bytes()).map(Arc::from).map_err(serde::de::Error::custom)
 }
 
 /// One stroke of the avoidance brush: patterns leave the area it covers empty.
@@ -101,7 +105,7 @@ impl Document {
         let name = unique_name(&base, |n| {
             self.imported_raster.iter().any(|e| e.name == n) || raster_brush::BUILTIN_NAMES.contains(&n)
         });
-        self.imported_raster.push(ImportedRaster { name: name.clone(), png: png.to_vec() });
+        self.imported_raster.push(ImportedRaster { name: name.clone(), png: Arc::from(png) });
         Ok(ExemplarRef::Imported(name))
     }
 }
