@@ -2,9 +2,7 @@
 //! drew, along a line and a loop, with N-component targets, checked on the
 //! final geometry by measures the solver does not see. The whole sweep is
 //! `cargo run -p tracery-core --release --example sweep` (see docs/quality.md).
-//!
-//! Ignored until the pinch-point mismatches it finds are fixed (7 of 30
-//! answered runs, on two ornaments): `cargo test -p tracery-core --test corpus -- --ignored`.
+//! Skipped, with a line saying so, where the corpus is not next to the checkout.
 
 use std::path::PathBuf;
 
@@ -26,7 +24,6 @@ fn corpus() -> Vec<PathBuf> {
 }
 
 #[test]
-#[ignore = "fails today on vectorian56 and vectorian174 (pinch points; docs/quality.md); run with --ignored"]
 fn corpus_subset_meets_its_plan_in_the_band() {
     let files = corpus();
     if files.is_empty() {
@@ -34,7 +31,14 @@ fn corpus_subset_meets_its_plan_in_the_band() {
         return;
     }
     // Every 30th ornament: both families, decided by name order alone.
-    let chosen: Vec<&PathBuf> = files.iter().step_by(30).collect();
+    // Plus ornaments that once came out unlike their plan (see the end).
+    let regressions = ["vectorian56.svg", "vectorian111.svg", "vectorian174.svg"];
+    let chosen: Vec<&PathBuf> = files
+        .iter()
+        .enumerate()
+        .filter(|(i, f)| i % 30 == 0 || f.file_name().is_some_and(|n| regressions.iter().any(|r| n == *r)))
+        .map(|(_, f)| f)
+        .collect();
     let curves = [Curve::line(120.0).unwrap(), Curve::circle(30.0).unwrap()];
     let targets = [(Target::Exactly(1), Target::Any), (Target::Exactly(2), Target::Any), (Target::Any, Target::Any)];
     let mut answered = 0;
@@ -75,9 +79,10 @@ fn corpus_subset_meets_its_plan_in_the_band() {
         }
     }
     assert!(answered * 3 >= runs, "only {answered} of {runs} runs were answered");
-    // Every mismatch is a bug (docs/quality.md lists the known ones: strokes
-    // that touch tangentially in the exemplar). Until they are fixed this
-    // guards the rate the sweep measured, so that no change makes it worse.
-    println!("{answered} of {runs} answered, {} not as planned: {inexact:#?}", inexact.len());
-    assert!(inexact.len() * 10 <= answered, "{} of {answered} differ from the plan: {inexact:#?}", inexact.len());
+    // Every mismatch is a bug. Three such were found here: bends that folded
+    // thin strokes over themselves (vectorian56), end pieces narrower than
+    // the gap at a break turned inside out (vectorian174), and parts touching
+    // at a point merged once mapped onto a loop (vectorian111).
+    println!("{answered} of {runs} answered, {} not as planned", inexact.len());
+    assert!(inexact.is_empty(), "{} of {answered} differ from the plan: {inexact:#?}", inexact.len());
 }

@@ -5,7 +5,9 @@
 use proptest::prelude::*;
 use tracery_core::DVec2;
 use tracery_core::geom::{Polygon, Region, count_topology};
-use tracery_core::vector_brush::{BUILTIN_NAMES, PieceSet, SliceOptions, SlicingMode, TopologyDescriptor, builtin};
+use tracery_core::vector_brush::{
+    BUILTIN_NAMES, Exemplar, PieceSet, SliceOptions, SlicingMode, TopologyDescriptor, builtin,
+};
 
 /// Lays the pieces out left to right with a gap between them, and bridges
 /// each gap with one quadrilateral per matched portal. Portals on both sides
@@ -73,7 +75,26 @@ fn piece_sets() -> Vec<(String, PieceSet)> {
         uniform.mode = SlicingMode::Uniform { cuts: 9 };
         sets.push((format!("{name}/uniform"), PieceSet::new(&exemplar, &uniform).unwrap()));
     }
+    let mut uniform = SliceOptions::default();
+    uniform.mode = SlicingMode::Uniform { cuts: 7 };
+    sets.push(("close zigzags/uniform".into(), PieceSet::new(&close_zigzags(), &uniform).unwrap()));
     sets
+}
+
+/// Two thin strokes close together, zigzagging steeply: pieces cut from it
+/// have portals a fraction of a piece apart, and a rising end joined to a
+/// falling one needs a hard bend over a short span of the seam.
+fn close_zigzags() -> Exemplar {
+    let (stroke, spacing) = (0.3, 1.0);
+    let strip = |y0: f64| {
+        let centre: Vec<DVec2> =
+            (0..=8).map(|k| DVec2::new(5.0 * k as f64, y0 + if k % 2 == 0 { -4.0 } else { 4.0 })).collect();
+        let mut outer: Vec<DVec2> = centre.iter().map(|p| *p + DVec2::new(0.0, 0.5 * stroke)).collect();
+        outer.extend(centre.iter().rev().map(|p| *p - DVec2::new(0.0, 0.5 * stroke)));
+        outer.reverse();
+        Polygon { outer, holes: vec![] }
+    };
+    Exemplar::from_region("close zigzags", Region::new(vec![strip(0.0), strip(spacing)])).unwrap()
 }
 
 #[test]
@@ -93,7 +114,7 @@ proptest! {
 
     #[test]
     fn merged_descriptor_predicts_assembled_topology(
-        which in 0usize..16,
+        which in 0usize..17,
         choices in proptest::collection::vec(0usize..1000, 2..14),
         from_start in any::<bool>(),
     ) {
@@ -132,5 +153,38 @@ fn finished_open_sequences_from_the_solver_agree_with_geometry() {
             );
             assert!(components.accepts(counted.components as u32), "{name}");
         }
+    }
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig { cases: 64, ..ProptestConfig::default() })]
+
+    /// Stitching bends pieces to weld their portals, however far apart the
+    /// solver raised them: the welded geometry still has the topology the
+    /// descriptors planned (a bend that folds material over itself splits
+    /// or merges parts).
+    #[test]
+    fn stitched_topology_matches_the_plan_under_any_offsets(
+        which in 0usize..17,
+        choices in proptest::collection::vec(0usize..1000, 2..10),
+        raise in proptest::collection::vec(-1.0f64..1.0, 10),
+        stretch in 0.9f64..1.1,
+    ) {
+        use tracery_core::vector_brush::{CurveKind, stitch};
+        let sets = piece_sets_cached();
+        let (name, set) = &sets[which % sets.len()];
+        let sequence = random_sequence(set, &choices, true);
+        let predicted = merged(set, &sequence);
+        // Up to a third of the exemplar's height either way: far more than
+        // the band lets the solver use, so every seam bends hard.
+        let offsets: Vec<f64> = sequence.iter().zip(&raise).map(|(_, r)| r * set.exemplar_height / 3.0).collect();
+        let length = stretch * sequence.iter().map(|&i| set.pieces[i].width).sum::<f64>();
+        let band = stitch(set, &sequence, &offsets, length, CurveKind::Open, 1e-3 * set.exemplar_height);
+        let counted = count_topology(&band.region);
+        prop_assert_eq!(
+            (counted.components as u32, counted.holes as u32),
+            (predicted.components(), predicted.holes()),
+            "{} sequence {:?} offsets {:?}", name, sequence, offsets
+        );
     }
 }

@@ -16,6 +16,7 @@ mod segment;
 mod specks;
 mod stroke;
 mod topology;
+mod touching;
 mod trace;
 
 pub use boolean::{FillRule, clip_to_rect, difference, resolve_contours, union};
@@ -31,4 +32,5 @@ pub use segment::closest_on_segment;
 pub use specks::{MIN_PART_PX, remove_specks};
 pub use stroke::{STROKE_ARC_TOLERANCE_MM, brush_stroke};
 pub use topology::{PatternTopology, Topology, count_topology};
+pub use touching::{separate_touching, separate_touching_rings};
 pub use trace::{OPAQUE_ALPHA, PixelFrame, join_corners, trace_opaque};

@@ -96,25 +96,6 @@ fn repaired(region: &Region) -> Region {
     crate::geom::union(&[&Region::new(polygons)])
 }
 
-/// Vertex `v` of a ring (material on the left of `prev → v → next`) moved
-/// [`TOUCH_GAP_MM`], or less on short edges, into the convex side of its
-/// corner: into the material where the material's corner is convex or
-/// straight, out of it where it is reflex.
-fn into_own_wedge(prev: glam::DVec2, v: glam::DVec2, next: glam::DVec2) -> Option<glam::DVec2> {
-    let (to_prev, to_next) = (prev - v, next - v);
-    let turn = (v - prev).perp_dot(next - v);
-    let bisector = (to_prev.normalize_or_zero() + to_next.normalize_or_zero()).normalize_or_zero();
-    // On a straight run either side is a half-plane: the material's is on the left.
-    let inward =
-        if turn == 0.0 || bisector == glam::DVec2::ZERO { (v - prev).perp().normalize_or_zero() } else { bisector };
-    if inward == glam::DVec2::ZERO {
-        return None;
-    }
-    let step = TOUCH_GAP_MM.min(0.25 * to_prev.length().min(to_next.length()));
-    let moved = round_to_f32(v + inward * step);
-    (moved != v).then_some(moved)
-}
-
 fn extrude_exactly(region: &Region, thickness_mm: f64, split_junctions: bool) -> Result<Mesh, MeshError> {
     // STL stores `f32`: vertices are rounded to it first and welded by exact
     // position, so two vertices never become one only in the file.
@@ -140,42 +121,11 @@ fn extrude_exactly(region: &Region, thickness_mm: f64, split_junctions: bool) ->
     }
     // Where rings touch at a point (parts meeting at a corner, two holes
     // tip to tip), a shared vertex would put four walls on one edge, so all
-    // copies but one move a hair apart, each into the convex side of its own
-    // corner there: its new edges stay inside its own wedge, so nothing
-    // crosses. Copies whose material corner is convex (or straight) move
-    // into their material first, since material wedges never overlap: parts
-    // that touch come apart, an opening pinched shut opens. Where copies with
-    // reflex corners still share the point (two holes tip to tip), all but
-    // one move back into their openings, and the material between them holds.
+    // copies but one move a hair apart (`geom::separate_touching_rings`).
+    // The pattern stages already did so at a coarser step; this catches
+    // points that rounding to `f32` made coincide.
+    crate::geom::separate_touching_rings(&mut rounded, TOUCH_GAP_MM, round_to_f32);
     let key = |p: glam::DVec2| ((p.x as f32).to_bits(), (p.y as f32).to_bits());
-    let mut copies: HashMap<(u32, u32), Vec<(usize, usize)>> = HashMap::new();
-    for (r, ring) in rounded.iter().enumerate() {
-        for (k, p) in ring.iter().enumerate() {
-            copies.entry(key(*p)).or_default().push((r, k));
-        }
-    }
-    let originals = rounded.clone();
-    let corner = |(r, k): (usize, usize)| {
-        let ring = &originals[r];
-        let n = ring.len();
-        (ring[(k + n - 1) % n], ring[k], ring[(k + 1) % n])
-    };
-    for shared in copies.values().filter(|c| c.len() > 1) {
-        let mut staying = Vec::new();
-        for &copy in shared {
-            let (prev, v, next) = corner(copy);
-            match into_own_wedge(prev, v, next).filter(|_| (v - prev).perp_dot(next - v) >= 0.0) {
-                Some(moved) => rounded[copy.0][copy.1] = moved,
-                None => staying.push(copy),
-            }
-        }
-        for &copy in staying.iter().skip(1) {
-            let (prev, v, next) = corner(copy);
-            if let Some(moved) = into_own_wedge(prev, v, next) {
-                rounded[copy.0][copy.1] = moved;
-            }
-        }
-    }
     let mut ids: HashMap<(u32, u32), usize> = HashMap::new();
     let mut points: Vec<Point2<f64>> = Vec::new();
     let mut rings: Vec<Vec<usize>> = Vec::new();

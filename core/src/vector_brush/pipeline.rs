@@ -9,7 +9,7 @@ use super::{
 };
 use crate::control::{Control, MaybeCancelled};
 use crate::curve::{Curve, CurveError, MAPPING_TOLERANCE_MM, PlanarPattern, map_along, planar_topology};
-use crate::geom::{PatternTopology, count_topology, without_slivers};
+use crate::geom::{PatternTopology, count_topology, separate_touching, without_slivers};
 use crate::mesh::MeshError;
 use crate::report::{Timings, Warning};
 
@@ -238,6 +238,10 @@ pub(crate) fn laid_out(
             // own half-height: a person who scaled it past the band asked for that.
             let limit = (0.5 * options.band_height).max(0.5 * exemplar.height()) * (1.0 + BAND_MARGIN);
             band.fit_within(limit);
+            // Parts that only touch at a point are apart in the plan; mapped
+            // onto a curve, rounding could merge them, so they are moved a
+            // resolution apart here, once.
+            band.region = separate_touching(&band.region, RESOLUTION_MM / scale);
             let mut planar = map_along(&band.region, scale, curve);
             planar.region = without_slivers(&planar.region, RESOLUTION_MM);
             let topology = planar_topology(&planar.region, curve);

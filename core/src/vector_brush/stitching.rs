@@ -152,6 +152,14 @@ pub const BREAK_GAP: f64 = 0.05;
 /// Largest slope change the bending is allowed, so that it stays gentle.
 const MAX_BEND: f64 = 1.5;
 
+/// Largest `|∂bend/∂v|` one bend may add: two bends overlap at most, so
+/// `v` still grows at least half as fast as before the bending.
+const MAX_FOLD_SLOPE: f64 = 0.25;
+
+/// `max_x x·(1 − x)²·(1 + 2x)` over `[0, 1]`, the largest value of the bend's
+/// `|u − seam| · falloff` in radii, rounded up.
+const FALLOFF_PEAK: f64 = 0.26;
+
 /// Stitches the pieces of `sequence`, raised by `offsets`, into one pattern
 /// of exactly `length` exemplar units along `u`. Outlines are refined until
 /// the deformed curve is within `tolerance` (exemplar units) of its chords.
@@ -262,6 +270,11 @@ pub fn stitch(
         let (x_min, x_max) = piece.region.bounds().map_or((f64::INFINITY, f64::NEG_INFINITY), |b| (b.min.x, b.max.x));
         let left_gap = if is_break(i) { (0.5 * gap - (x_min - piece.u_start)).max(0.0) } else { 0.0 };
         let right_gap = if is_break(i + 1) { (0.5 * gap - (piece.u_end() - x_max)).max(0.0) } else { 0.0 };
+        // A piece narrower than the gap is squeezed to half its width at
+        // most: squeezed further it would turn inside out.
+        let squeeze = ((0.5 * piece.width) / (left_gap + right_gap)).min(1.0);
+        let (left_gap, right_gap) =
+            if squeeze.is_finite() { (left_gap * squeeze, right_gap * squeeze) } else { (0.0, 0.0) };
         let (u0, u1) = (seam_u[i] + left_gap * stretch, seam_u[i + 1] - right_gap * stretch);
         let width = u1 - u0;
         let radius = 0.3 * width;
@@ -291,12 +304,20 @@ pub fn stitch(
                 }
                 let falloff = (1.0 - x) * (1.0 - x) * (1.0 + 2.0 * x);
                 for b in bends.iter() {
+                    // Each height lies in at most two weights' supports: with
+                    // each bend's slope across the band held to a quarter,
+                    // `v` keeps increasing with the exemplar's height, so
+                    // the map never folds material over itself (a fold
+                    // splits or merges parts the plan counted).
+                    let support = (b.above - b.at).min(b.at - b.below).max(1e-12);
+                    let cap = MAX_FOLD_SLOPE * support / (radius.abs() * FALLOFF_PEAK).max(1e-12);
+                    let coefficient = b.coefficient.clamp(-cap, cap);
                     let weight = if v >= b.at {
                         (1.0 - (v - b.at) / (b.above - b.at).max(1e-12)).clamp(0.0, 1.0)
                     } else {
                         (1.0 - (b.at - v) / (b.at - b.below).max(1e-12)).clamp(0.0, 1.0)
                     };
-                    bend += b.coefficient * (u - seam) * falloff * weight;
+                    bend += coefficient * (u - seam) * falloff * weight;
                 }
             }
             v += bend;
