@@ -182,9 +182,14 @@ pub(crate) fn analyse(
         // Hairline slivers where two strokes of the drawing nearly coincide
         // are filled first, as they are in the result, so that the plan and
         // the final geometry agree on them.
-        let settled =
-            Exemplar::from_region(exemplar.name.clone(), without_slivers(&exemplar.region, RESOLUTION_MM / scale))
-                .unwrap_or_else(|_| exemplar.clone());
+        // Parts that only touch at a point are moved apart, as they are in
+        // the result, so that the plan counts them apart too.
+        let resolution = RESOLUTION_MM / scale;
+        let settled = Exemplar::from_region(
+            exemplar.name.clone(),
+            separate_touching(&without_slivers(&exemplar.region, resolution), resolution),
+        )
+        .unwrap_or_else(|_| exemplar.clone());
         PieceSet::new(&settled, &slicing)
     })?;
     Ok((set, timings))
