@@ -272,9 +272,9 @@ pub fn stitch(
         let right_gap = if is_break(i + 1) { (0.5 * gap - (piece.u_end() - x_max)).max(0.0) } else { 0.0 };
         // A piece narrower than the gap is squeezed to half its width at
         // most: squeezed further it would turn inside out.
-        let squeeze = ((0.5 * piece.width) / (left_gap + right_gap)).min(1.0);
-        let (left_gap, right_gap) =
-            if squeeze.is_finite() { (left_gap * squeeze, right_gap * squeeze) } else { (0.0, 0.0) };
+        // (No gap gives 0/0 or w/0, and `min` turns both into 1.)
+        let squeeze = (0.5 * piece.width / (left_gap + right_gap)).min(1.0);
+        let (left_gap, right_gap) = (left_gap * squeeze, right_gap * squeeze);
         let (u0, u1) = (seam_u[i] + left_gap * stretch, seam_u[i + 1] - right_gap * stretch);
         let width = u1 - u0;
         let radius = 0.3 * width;
