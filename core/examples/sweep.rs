@@ -5,13 +5,14 @@
 //! ```text
 //! cargo run -p tracery-core --release --example sweep -- \
 //!     [--corpus DIR] [--every K] [--curves line,circle,...] [--targets 1/any,...] \
-//!     [--csv OUT.csv] [--markdown OUT.md]
+//!     [--csv OUT.csv] [--markdown OUT.md] [--variety WEIGHT]
 //! ```
 //!
 //! Each run records whether it was answered, whether the topology counted on
 //! the final geometry equals the plan and the target, how far the geometry
 //! strays from the curve (in half bands), the near period and longest repeat
-//! of the shape classes along the pattern, the seam tangent jump, and the
+//! of the shape classes along the pattern, the seam tangent jump (and, for a short period, whether a much higher
+//! variety weight avoids it), and the
 //! time of the whole pipeline. The summary prints one row per curve.
 
 #[path = "common/sheet.rs"]
@@ -41,6 +42,8 @@ struct Args {
     sheets: Option<PathBuf>,
     /// Only ornaments whose name contains this.
     only: Option<String>,
+    /// The variety weight, instead of the default setting's.
+    variety: Option<f64>,
 }
 
 const CURVES: [&str; 6] = ["line:200", "circle:40", "wave:200", "square:70", "hexagon:40", "star:45"];
@@ -61,6 +64,7 @@ fn parse_args() -> Args {
         svg_dir: None,
         sheets: None,
         only: None,
+        variety: None,
     };
     let mut it = std::env::args().skip(1);
     while let Some(flag) = it.next() {
@@ -83,6 +87,7 @@ fn parse_args() -> Args {
             "--svg-dir" => args.svg_dir = Some(value.into()),
             "--only" => args.only = Some(value),
             "--sheets" => args.sheets = Some(value.into()),
+            "--variety" => args.variety = Some(value.parse().expect("--variety WEIGHT")),
             _ => panic!("unknown flag {flag}"),
         }
     }
@@ -109,6 +114,23 @@ struct Run {
     states: usize,
     /// Milliseconds in analysis, solve, geometry and meshing.
     stages: String,
+    /// The solver's matching cost and autocorrelation, to compare with the
+    /// independent measures above.
+    matching: f64,
+    auto: f64,
+    /// For a run with a short period: whether the same run with the variety
+    /// weight at [`PROBE_VARIETY`] found an answer without one, which shows
+    /// that the period was the default weight's choice and not forced by the
+    /// band and the targets.
+    avoidable: bool,
+}
+
+/// The variety weight of the probe for short periods: a hundred times the
+/// default, so that variety outweighs every seam.
+const PROBE_VARIETY: f64 = 30.0;
+
+fn short_period(run: &Run) -> bool {
+    run.status == "ok" && run.pieces >= 6 && run.period < 1.0 / 3.0
 }
 
 fn text(t: Target) -> String {
@@ -124,8 +146,10 @@ fn run_one(
     curve: &Curve,
     targets: (Target, Target),
     svg_dir: Option<&std::path::Path>,
+    variety: Option<f64>,
 ) -> Run {
     let mut settings = Settings::default();
+    settings.variety = variety.unwrap_or(settings.variety);
     settings.components = targets.0;
     settings.holes = targets.1;
     settings.closed_pattern = curve.is_closed();
@@ -145,6 +169,9 @@ fn run_one(
         time_ms: 0.0,
         states: 0,
         stages: String::new(),
+        matching: 0.0,
+        auto: 0.0,
+        avoidable: false,
     };
     let start = Instant::now();
     let result = synthesize(exemplar, curve, &settings, &Control::default())
@@ -174,6 +201,8 @@ fn run_one(
         let _ = std::fs::write(dir.join(name), region_to_svg(&synthesis.planar.region));
     }
     run.states = s.states;
+    run.matching = s.matching_cost;
+    run.auto = s.autocorrelation;
     run.stages = ["analysis", "solve", "geometry"]
         .iter()
         .map(|k| format!("{:.0}", synthesis.timings.stage_ms(k).unwrap_or(0.0)))
@@ -245,8 +274,8 @@ fn percentile(sorted: &[f64], q: f64) -> f64 {
 
 fn summary(runs: &[Run], curves: &[String]) -> String {
     let mut out = String::from(
-        "| curve | runs | answered | exact | none | cap | mesh | error | drift max | seam max ° | period < ⅓ | p50 ms | p95 ms | max ms |\n\
-         |---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n",
+        "| curve | runs | answered | exact | none | cap | mesh | error | drift max | seam max ° | period < ⅓ | of which avoidable | p50 ms | p95 ms | max ms |\n\
+         |---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n",
     );
     let mut rows: Vec<(String, Vec<&Run>)> =
         curves.iter().map(|c| (c.clone(), runs.iter().filter(|r| &r.curve == c).collect::<Vec<_>>())).collect();
@@ -256,9 +285,9 @@ fn summary(runs: &[Run], curves: &[String]) -> String {
         let count = |s: &str| rs.iter().filter(|r| r.status == s).count();
         let mut times: Vec<f64> = rs.iter().map(|r| r.time_ms).collect();
         times.sort_by(f64::total_cmp);
-        let short_period = answered.iter().filter(|r| r.pieces >= 6 && r.period < 1.0 / 3.0).count();
+        let periodic: Vec<&&&Run> = answered.iter().filter(|r| short_period(r)).collect();
         out += &format!(
-            "| {name} | {} | {} | {} | {} | {} | {} | {} | {:.2} | {:.1} | {} | {:.1} | {:.1} | {:.1} |\n",
+            "| {name} | {} | {} | {} | {} | {} | {} | {} | {:.2} | {:.1} | {} | {} | {:.1} | {:.1} | {:.1} |\n",
             rs.len(),
             answered.len(),
             answered.iter().filter(|r| r.exact).count(),
@@ -268,7 +297,8 @@ fn summary(runs: &[Run], curves: &[String]) -> String {
             count("error"),
             answered.iter().map(|r| r.drift).fold(0.0, f64::max),
             answered.iter().map(|r| r.seam_deg).fold(0.0, f64::max),
-            short_period,
+            periodic.len(),
+            periodic.iter().filter(|r| r.avoidable).count(),
             percentile(&times, 0.5),
             percentile(&times, 0.95),
             times.last().copied().unwrap_or(f64::NAN),
@@ -302,7 +332,7 @@ fn main() {
         .collect();
     let mut runs = Vec::new();
     let mut csv = String::from(
-        "ornament,curve,target,status,exact,drift,period,repeat,seam_deg,pieces,time_ms,states,stages,reason\n",
+        "ornament,curve,target,status,exact,drift,period,repeat,seam_deg,pieces,time_ms,states,stages,matching,auto,avoidable,reason\n",
     );
     let started = Instant::now();
     for file in &files {
@@ -315,9 +345,13 @@ fn main() {
         };
         for (spec, curve) in &curves {
             for &t in &args.targets {
-                let r = run_one(&exemplar, spec, curve, t, args.svg_dir.as_deref());
+                let mut r = run_one(&exemplar, spec, curve, t, args.svg_dir.as_deref(), args.variety);
+                if short_period(&r) {
+                    let probe = run_one(&exemplar, spec, curve, t, None, Some(PROBE_VARIETY));
+                    r.avoidable = probe.status == "ok" && !short_period(&probe);
+                }
                 csv += &format!(
-                    "{},{},{},{},{},{:.3},{:.3},{:.3},{:.2},{},{:.2},{},{},\"{}\"\n",
+                    "{},{},{},{},{},{:.3},{:.3},{:.3},{:.2},{},{:.2},{},{},{:.4},{:.2},{},\"{}\"\n",
                     r.ornament,
                     r.curve,
                     r.target,
@@ -331,6 +365,9 @@ fn main() {
                     r.time_ms,
                     r.states,
                     r.stages,
+                    r.matching,
+                    r.auto,
+                    r.avoidable,
                     r.reason.replace('"', "'")
                 );
                 if r.status != "ok" && r.status != "none" || r.status == "ok" && !r.exact {
