@@ -181,6 +181,21 @@ fn curves_from_svg_and_rectangles() {
 }
 
 #[test]
+fn a_tall_rectangle_whose_cuts_cross_many_rows_is_made() {
+    // Filigree at 150 × 80 mm: the second pass cuts across the stacked rows
+    // 39 times, past the 32 crossings descriptors once held.
+    let dir = tempdir("tall");
+    let stl = dir.join("tall.stl");
+    let json = synth_report(
+        &["--exemplar", "filigree", "--along", "rect:150x80", "--stl", &stl.display().to_string()],
+        &dir.join("tall.json"),
+    );
+    assert_eq!(field(&json, "components"), "1");
+    let check = check_stl(&stl);
+    assert_eq!((check.open_edges, check.shells), (0, 1), "{check:?}");
+}
+
+#[test]
 fn a_pendant_goes_out_as_3mf_and_a_cut_svg() {
     let dir = tempdir("printer");
     let (three_mf, svg, stl) = (dir.join("p.3mf"), dir.join("p.svg"), dir.join("p.stl"));

@@ -8,8 +8,13 @@
 
 use smallvec::SmallVec;
 
+/// The component id of one portal. Sixteen bits: a cut across a tall
+/// rectangle's second pass crosses the first pass's strips dozens of times,
+/// and joining two descriptors numbers the ids of both.
+pub type PortalId = u16;
+
 /// Portal component ids of one side, top to bottom.
-pub type PortalIds = SmallVec<[u8; 8]>;
+pub type PortalIds = SmallVec<[PortalId; 8]>;
 
 /// How a piece or partial pattern is connected through its portals.
 #[derive(Clone, Debug, Default, PartialEq, Eq, Hash)]
@@ -44,18 +49,18 @@ impl LoopTopology {
 /// Union-find over a few component ids, with an integer potential per element
 /// (how many times a path winds around a loop, for [`TopologyDescriptor::close_loop`]).
 struct UnionFind {
-    parent: SmallVec<[u8; 16]>,
+    parent: SmallVec<[PortalId; 16]>,
     potential: SmallVec<[i32; 16]>,
 }
 
 impl UnionFind {
     fn new(n: usize) -> Self {
-        UnionFind { parent: (0..n as u8).collect(), potential: SmallVec::from_elem(0, n) }
+        UnionFind { parent: (0..n as PortalId).collect(), potential: SmallVec::from_elem(0, n) }
     }
 
     /// Root of `x` and the potential of `x` relative to it. Sets hold a
     /// handful of ids, so no path compression is needed.
-    fn find(&self, x: u8) -> (u8, i32) {
+    fn find(&self, x: PortalId) -> (PortalId, i32) {
         let mut root = x;
         let mut pot = 0;
         while self.parent[root as usize] != root {
@@ -67,7 +72,7 @@ impl UnionFind {
 
     /// Adds an edge meaning `potential(b) = potential(a) + w`. Returns `None`
     /// when it joins two sets, or the winding of the cycle it closes.
-    fn union(&mut self, a: u8, b: u8, w: i32) -> Option<i32> {
+    fn union(&mut self, a: PortalId, b: PortalId, w: i32) -> Option<i32> {
         let (ra, pa) = self.find(a);
         let (rb, pb) = self.find(b);
         if ra == rb {
@@ -89,7 +94,7 @@ impl TopologyDescriptor {
     /// let b = TopologyDescriptor::new(&[0, 0], &[0, 0], 0, 0);
     /// assert_eq!(a, b);
     /// ```
-    pub fn new(left: &[u8], right: &[u8], closed_components: u16, holes: u16) -> Self {
+    pub fn new(left: &[PortalId], right: &[PortalId], closed_components: u16, holes: u16) -> Self {
         let mut d = TopologyDescriptor {
             left: left.iter().copied().collect(),
             right: right.iter().copied().collect(),
@@ -101,10 +106,11 @@ impl TopologyDescriptor {
     }
 
     fn canonicalize(&mut self) {
-        let mut map = [u8::MAX; 256];
-        let mut next = 0u8;
+        let largest = self.left.iter().chain(self.right.iter()).copied().max().unwrap_or(0);
+        let mut map: SmallVec<[PortalId; 64]> = SmallVec::from_elem(PortalId::MAX, usize::from(largest) + 1);
+        let mut next: PortalId = 0;
         for id in self.left.iter_mut().chain(self.right.iter_mut()) {
-            if map[*id as usize] == u8::MAX {
+            if map[*id as usize] == PortalId::MAX {
                 map[*id as usize] = next;
                 next += 1;
             }
@@ -113,12 +119,12 @@ impl TopologyDescriptor {
     }
 
     /// Component ids of the left portals, top to bottom.
-    pub fn left(&self) -> &[u8] {
+    pub fn left(&self) -> &[PortalId] {
         &self.left
     }
 
     /// Component ids of the right portals, top to bottom.
-    pub fn right(&self) -> &[u8] {
+    pub fn right(&self) -> &[PortalId] {
         &self.right
     }
 
@@ -186,18 +192,18 @@ impl TopologyDescriptor {
         let mut uf = UnionFind::new(na + nb);
         let mut holes = u32::from(self.holes) + u32::from(next.holes);
         for (&a, &b) in self.right.iter().zip(next.left.iter()) {
-            if uf.union(a, b + na as u8, 0).is_some() {
+            if uf.union(a, b + na as PortalId, 0).is_some() {
                 holes += 1;
             }
         }
         let left: PortalIds = self.left.iter().map(|&a| uf.find(a).0).collect();
-        let right: PortalIds = next.right.iter().map(|&b| uf.find(b + na as u8).0).collect();
+        let right: PortalIds = next.right.iter().map(|&b| uf.find(b + na as PortalId).0).collect();
         let mut open = [false; 256];
         for &id in left.iter().chain(right.iter()) {
             open[id as usize] = true;
         }
         let mut newly_closed = 0u32;
-        for x in 0..(na + nb) as u8 {
+        for x in 0..(na + nb) as PortalId {
             let (root, _) = uf.find(x);
             if root == x && !open[x as usize] {
                 newly_closed += 1;
@@ -239,8 +245,8 @@ impl TopologyDescriptor {
         let n = self.open_components() as usize;
         let mut uf = UnionFind::new(n);
         let mut cycles = 0u32;
-        let mut winding_roots: SmallVec<[u8; 16]> = SmallVec::new();
-        let mut winding_seen: SmallVec<[u8; 16]> = SmallVec::new();
+        let mut winding_roots: SmallVec<[PortalId; 16]> = SmallVec::new();
+        let mut winding_seen: SmallVec<[PortalId; 16]> = SmallVec::new();
         // Crossing the seam from the end back to the start winds once around.
         for (&r, &l) in self.right.iter().zip(self.left.iter()) {
             if let Some(winding) = uf.union(r, l, 1) {
@@ -256,7 +262,7 @@ impl TopologyDescriptor {
                 winding_roots.push(root);
             }
         }
-        let roots = (0..n as u8).filter(|&x| uf.find(x).0 == x).count() as u32;
+        let roots = (0..n as PortalId).filter(|&x| uf.find(x).0 == x).count() as u32;
         let wraps = winding_roots.len() as u32;
         Some(LoopTopology {
             components: u32::from(self.closed_components) + roots,

@@ -38,7 +38,7 @@ mod stitching;
 
 pub use autocorrelation::{Autocorrelation, LAGS, Similarity};
 pub use builtin::{BUILTIN_NAMES, builtin, builtin_svg};
-pub use descriptor::{LoopTopology, PortalIds, TopologyDescriptor};
+pub use descriptor::{LoopTopology, PortalId, PortalIds, TopologyDescriptor};
 pub use error::{ExemplarError, SliceError, SolveError, Unmet};
 pub use exemplar::{Exemplar, LoadOptions};
 pub use growing::Growing;

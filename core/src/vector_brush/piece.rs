@@ -2,7 +2,9 @@
 
 use glam::DVec2;
 
-use super::{Exemplar, PairCost, Portal, SliceError, SliceOptions, TopologyDescriptor, cut_positions, portals_at};
+use super::{
+    Exemplar, PairCost, Portal, PortalId, SliceError, SliceOptions, TopologyDescriptor, cut_positions, portals_at,
+};
 use crate::geom::{Rect, Region, clip_to_rect, closest_on_segment};
 
 /// One piece of an exemplar, between two cut lines (or an end of the exemplar).
@@ -140,13 +142,13 @@ impl PieceSet {
                 let right_polygons: Vec<usize> = right.iter().map(|p| polygon_of(&region, b, p, -inward)).collect();
                 // Dense ids for the polygons that reach a portal (at most
                 // 2 × MAX_PORTALS of them), however many the piece holds: a
-                // polygon index past 255 must not wrap onto another.
+                // polygon index past the id type must not wrap onto another.
                 let mut touching: Vec<usize> = left_polygons.iter().chain(&right_polygons).copied().collect();
                 touching.sort_unstable();
                 touching.dedup();
-                let id = |k: &usize| touching.binary_search(k).unwrap_or(0) as u8;
-                let left_ids: Vec<u8> = left_polygons.iter().map(id).collect();
-                let right_ids: Vec<u8> = right_polygons.iter().map(id).collect();
+                let id = |k: &usize| touching.binary_search(k).unwrap_or(0) as PortalId;
+                let left_ids: Vec<PortalId> = left_polygons.iter().map(id).collect();
+                let right_ids: Vec<PortalId> = right_polygons.iter().map(id).collect();
                 let closed = region.polygons.len() - touching.len();
                 let descriptor =
                     TopologyDescriptor::new(&left_ids, &right_ids, closed as u16, region.hole_count() as u16);

@@ -40,8 +40,12 @@ impl Default for SliceOptions {
     }
 }
 
-/// Most portals on one cut line that topology descriptors support.
-pub const MAX_PORTALS: usize = 32;
+/// Most portals on one cut line. Not a limit of the descriptors (their
+/// [`PortalId`](super::descriptor::PortalId)s hold four times this, what
+/// joining two pieces numbers) but a guard against drawings no search could
+/// handle: the tallest rectangles people make cross their first pass's
+/// strips about a hundred times.
+pub const MAX_PORTALS: usize = 4096;
 
 /// The `u` positions where the topology of vertical cross-sections changes:
 /// the local extrema of `u` along the boundary, where an interval of the cut
