@@ -109,6 +109,20 @@ fn the_command_line_and_the_app_share_their_defaults() {
     assert!(flag_alone.settings().closed_pattern);
     let off = Wrapper::parse_from(["synth", "--exemplar", "l", "--along", "x:1", "--closed-pattern", "false"]).args;
     assert!(!off.settings().closed_pattern);
+    // A shade's flags fall back on the same settings, and on the shade's own defaults.
+    #[derive(Parser)]
+    struct ShadeWrapper {
+        #[command(flatten)]
+        args: tracery::cli::ShadeArgs,
+    }
+    let shade = ShadeWrapper::parse_from(["shade", "--exemplar", "lace", "--cylinder", "40,60"]).args;
+    assert_eq!(shade.brush.settings(), Settings::default());
+    let (made, spec) = shade.shade_settings().unwrap();
+    let defaults = tracery_core::surface::ShadeSettings::default();
+    assert_eq!(
+        (made.rim_mm, made.row_overlap_mm, spec.as_str()),
+        (defaults.rim_mm, defaults.row_overlap_mm, "cylinder:40,60")
+    );
 }
 
 #[test]

@@ -12,13 +12,16 @@
 //! - [`report`]: typed [`report::Warning`]s and [`report::Timings`].
 //! - [`print`]: printability on the final planar geometry (thin features,
 //!   narrow gaps, weak bridges) and thickening.
+//! - [`surface`]: patterns laid on 3D surfaces: lamp shades (rows wrapped
+//!   onto a cylinder or a cone, welded all around, made solid).
 //! - [`product`]: the [`Product`] every mode returns; the app's canvas, 3D
 //!   preview, export and the command-line report consume only it.
 //!
 //! Modes, which use the shared stages and never each other:
 //!
 //! - [`vector_brush`]: topology-constrained synthesis of vector patterns
-//!   along curves, from an SVG exemplar to a printable mesh.
+//!   along curves, from an SVG exemplar to a printable mesh, and lamp shades
+//!   made of its rows.
 //! - [`raster_brush`]: bitmap exemplars synthesized along curves without
 //!   distortion, traced into printable outlines.
 //!
@@ -36,6 +39,7 @@ pub mod product;
 pub mod quality;
 pub mod raster_brush;
 pub mod report;
+pub mod surface;
 pub mod vector_brush;
 
 pub use glam::DVec2;

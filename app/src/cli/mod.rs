@@ -4,6 +4,7 @@
 
 mod output;
 mod raster;
+mod shade;
 mod synth;
 
 use anyhow::{Context, Result};
@@ -12,6 +13,7 @@ use tracery_core::vector_brush::{BUILTIN_NAMES, PieceSet, SliceOptions, builtin}
 
 pub use output::{OutputArgs, Report};
 pub use raster::RasterArgs;
+pub use shade::ShadeArgs;
 pub use synth::SynthArgs;
 
 /// Tracery: synthesize printable patterns. Without a command, opens the app.
@@ -41,6 +43,8 @@ enum Command {
     Synth(Box<SynthArgs>),
     /// Raster brush: synthesize a bitmap pattern along a curve and write PNG, STL, SVG and a report.
     Raster(Box<RasterArgs>),
+    /// Lamp shade: rows of vector-brush pattern wrapped onto a cylinder or a cone, written as STL, 3MF, SVG (laid flat) and a report.
+    Shade(Box<ShadeArgs>),
 }
 
 fn list_raster() -> Result<()> {
@@ -73,6 +77,7 @@ pub fn run(cli: Cli) -> Result<()> {
         Some(Command::List { raster: true }) => list_raster(),
         Some(Command::Synth(args)) => synth::run(*args),
         Some(Command::Raster(args)) => raster::run(*args),
+        Some(Command::Shade(args)) => shade::run(*args),
         None => Ok(()),
     }
 }

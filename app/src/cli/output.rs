@@ -24,9 +24,9 @@ const MM_PER_INCH: f64 = 25.4;
 /// The flags every subcommand takes.
 #[derive(clap::Args, Debug, Clone, PartialEq)]
 pub struct OutputArgs {
-    /// Where the pattern goes: line:LENGTH_MM, circle:RADIUS_MM, wave:LENGTH_MM, rect:W_MMxH_MM or svg:FILE.svg.
+    /// Where the pattern goes: line:LENGTH_MM, circle:RADIUS_MM, wave:LENGTH_MM, rect:W_MMxH_MM or svg:FILE.svg (not for `shade`, whose shape says where).
     #[arg(long)]
-    pub along: String,
+    pub along: Option<String>,
     /// Binary STL output (millimetres).
     #[arg(long)]
     pub stl: Option<PathBuf>,
@@ -130,6 +130,16 @@ fn parse_flavour(s: &str) -> Result<SvgFlavour, String> {
 }
 
 impl OutputArgs {
+    /// The `--along` curve, which synth and raster need.
+    pub fn along(&self) -> Result<&str> {
+        match &self.along {
+            Some(spec) => Ok(spec),
+            None => {
+                bail!("--along is required: where the pattern goes (line:120, circle:25, rect:80x50, svg:FILE.svg, …)")
+            }
+        }
+    }
+
     /// The SVG options these flags ask for.
     pub fn svg_options(&self) -> Result<SvgOptions> {
         let kerf_mm = self.kerf.unwrap_or(0.0);
@@ -175,7 +185,15 @@ pub struct Report<'a> {
 
 /// Writes the outputs asked for and prints a summary. Every file is made in
 /// memory first, so that an error leaves none behind.
-pub fn write_outputs(mode: &'static str, exemplar: &str, args: &OutputArgs, product: &Product) -> Result<()> {
+///
+/// `placed` says where the pattern went (the `--along` curve, or a shade's shape).
+pub fn write_outputs(
+    mode: &'static str,
+    exemplar: &str,
+    placed: &str,
+    args: &OutputArgs,
+    product: &Product,
+) -> Result<()> {
     let mut stl = Vec::new();
     let (mut triangles, mut shells) = (0, 0);
     if let Some(mesh) = &product.mesh_mm {
@@ -188,8 +206,7 @@ pub fn write_outputs(mode: &'static str, exemplar: &str, args: &OutputArgs, prod
     }
     let mut three_mf = std::io::Cursor::new(Vec::new());
     if let (Some(_), Some(mesh)) = (&args.three_mf, &product.mesh_mm) {
-        let object =
-            ThreeMfObject { name: format!("{exemplar} along {}", args.along), colour_rgb: object_colour(0), mesh };
+        let object = ThreeMfObject { name: format!("{exemplar} on {placed}"), colour_rgb: object_colour(0), mesh };
         write_3mf(&[object], &mut three_mf)?;
     }
     let png = match &args.png {
@@ -208,7 +225,7 @@ pub fn write_outputs(mode: &'static str, exemplar: &str, args: &OutputArgs, prod
     let report = Report {
         mode,
         exemplar: exemplar.to_string(),
-        curve: args.along.clone(),
+        curve: placed.to_string(),
         components: product.topology.components,
         holes: product.topology.holes,
         loop_openings: product.topology.loop_openings,

@@ -83,7 +83,8 @@ pub fn run(args: RasterArgs) -> Result<()> {
     let print = args.output.print.settings()?;
     let rings = args.output.print.jump_rings()?;
     let exemplar = load_raster_exemplar(&args.exemplar)?;
-    let mut along = Along::parse(&args.output.along)?;
+    let spec = args.output.along()?;
+    let mut along = Along::parse(spec)?;
     if let Along::Curve(curve) = &along
         && args.closed
         && !curve.is_closed()
@@ -92,5 +93,5 @@ pub fn run(args: RasterArgs) -> Result<()> {
     }
     let product = make_product(&exemplar, &along, &settings, &Region::default(), &Control::default())?;
     let product = finish(add_jump_rings(product, &rings)?, &print);
-    write_outputs("raster", &exemplar.name, &args.output, &product)
+    write_outputs("raster", &exemplar.name, spec, &args.output, &product)
 }

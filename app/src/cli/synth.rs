@@ -23,6 +23,14 @@ pub struct SynthArgs {
     pub exemplar: String,
     #[command(flatten)]
     pub output: OutputArgs,
+    #[command(flatten)]
+    pub brush: BrushArgs,
+}
+
+/// The vector brush's settings as flags, shared by `tracery synth` and
+/// `tracery shade`.
+#[derive(clap::Args, Debug, Clone, PartialEq)]
+pub struct BrushArgs {
     /// Band width across the curve, mm [default: 10].
     #[arg(long)]
     pub band: Option<f64>,
@@ -59,6 +67,13 @@ pub struct SynthArgs {
 }
 
 impl SynthArgs {
+    /// The settings these flags ask for (see [`BrushArgs::settings`]).
+    pub fn settings(&self) -> Settings {
+        self.brush.settings()
+    }
+}
+
+impl BrushArgs {
     /// The settings these flags ask for: the defaults, with each given flag applied.
     pub fn settings(&self) -> Settings {
         let mut s = Settings::default();
@@ -115,8 +130,9 @@ pub fn run(args: SynthArgs) -> Result<()> {
     let print = args.output.print.settings()?;
     let rings = args.output.print.jump_rings()?;
     let exemplar = load_exemplar(&args.exemplar)?;
-    let along = Along::parse(&args.output.along)?;
+    let spec = args.output.along()?;
+    let along = Along::parse(spec)?;
     let product = make_product(&exemplar, &along, &settings, &Control::default())?;
     let product = finish(add_jump_rings(product, &rings)?, &print);
-    write_outputs("synth", &exemplar.name, &args.output, &product)
+    write_outputs("synth", &exemplar.name, spec, &args.output, &product)
 }

@@ -89,6 +89,23 @@ pub fn finish(mut product: Product, settings: &PrintSettings) -> Product {
             Err(e) => product.warnings.push(Warning::ThickeningFailed { reason: e.to_string() }),
         }
     }
+    warn(product, found, settings)
+}
+
+/// Checks a product whose solid is not its region extruded (a shade bent
+/// onto a surface), against `settings`: its region is the pattern laid flat
+/// without stretching, printed `thickness_mm` thick. Nothing is thickened.
+pub fn check_solid(mut product: Product, settings: &PrintSettings, thickness_mm: f64) -> Product {
+    if product.region_mm.is_empty() {
+        return product;
+    }
+    let seams = product.overlays.seams_mm.clone();
+    let found = product.timings.time("print check", || check(&product.region_mm, &seams, settings, thickness_mm));
+    warn(product, found, settings)
+}
+
+/// Adds the warnings `found` calls for, and the printability itself.
+fn warn(mut product: Product, found: Printability, settings: &PrintSettings) -> Product {
     if let Some(width_mm) = found.thinnest_feature_mm {
         product.warnings.push(Warning::ThinFeatures {
             count: found.thin_features.len(),

@@ -32,6 +32,7 @@ mod portal;
 mod positioning;
 mod product;
 mod settings;
+mod shade;
 mod slicing;
 mod solver;
 mod stitching;
@@ -49,6 +50,7 @@ pub use portal::{Portal, portals_at};
 pub use positioning::{position_offsets, spread_offsets};
 pub use product::{make_alternatives, make_product};
 pub use settings::{ALTERNATIVES, InvalidSetting, Settings};
+pub use shade::{ShadeSynthesisError, make_shade};
 pub use slicing::{MAX_PORTALS, SliceOptions, SlicingMode, cut_positions, topology_events};
 pub use solver::{
     BAND_MARGIN, CurveKind, LengthGrid, STATE_BYTES, Solution, SolveOptions, Target, solve, tolerance_levels,

@@ -1,0 +1,86 @@
+//! Renders binary STL files to PNG pictures for looking at them: a z-buffer
+//! with Lambert shading, seen from the side and a little above.
+//!
+//! `cargo run -p tracery-core --release --example mesh_png -- IN.stl OUT.png [SIZE_PX]`
+
+use glam::DVec3;
+
+fn read_stl(path: &str) -> Vec<[DVec3; 3]> {
+    let bytes = std::fs::read(path).expect("read STL");
+    let count = u32::from_le_bytes(bytes[80..84].try_into().unwrap()) as usize;
+    let f = |o: usize| f32::from_le_bytes(bytes[o..o + 4].try_into().unwrap()) as f64;
+    (0..count)
+        .map(|t| {
+            let base = 84 + 50 * t + 12;
+            [0, 1, 2].map(|k| DVec3::new(f(base + 12 * k), f(base + 12 * k + 4), f(base + 12 * k + 8)))
+        })
+        .collect()
+}
+
+fn main() {
+    let args: Vec<String> = std::env::args().collect();
+    let (input, output) = (&args[1], &args[2]);
+    let size: usize = args.get(3).and_then(|s| s.parse().ok()).unwrap_or(900);
+    let triangles = read_stl(input);
+    // Camera: looking along -y (from the front), tilted 25° down.
+    let tilt = 25f64.to_radians();
+    let forward = DVec3::new(0.0, tilt.cos(), -tilt.sin());
+    let up = DVec3::new(0.0, tilt.sin(), tilt.cos());
+    let right = forward.cross(up);
+    let project = |p: DVec3| DVec3::new(p.dot(right), p.dot(up), p.dot(forward));
+    let (mut lo, mut hi) = (DVec3::splat(f64::MAX), DVec3::splat(f64::MIN));
+    for t in &triangles {
+        for &p in t {
+            lo = lo.min(project(p));
+            hi = hi.max(project(p));
+        }
+    }
+    let scale = 0.94 * size as f64 / (hi.x - lo.x).max(hi.y - lo.y);
+    let offset = 0.5 * (DVec3::splat(size as f64) - (hi - lo) * scale);
+    let to_px = |p: DVec3| {
+        let q = project(p);
+        DVec3::new((q.x - lo.x) * scale + offset.x, size as f64 - ((q.y - lo.y) * scale + offset.y), q.z)
+    };
+    let light = DVec3::new(-0.4, -0.8, 0.5).normalize();
+    let mut depth = vec![f64::MAX; size * size];
+    let mut rgb = vec![255u8; size * size * 3];
+    for t in &triangles {
+        let n = (t[1] - t[0]).cross(t[2] - t[0]).normalize_or_zero();
+        let shade = 0.25 + 0.75 * n.dot(-light).abs();
+        let facing = n.dot(forward) < 0.0;
+        let colour = if facing { [200.0, 170.0, 120.0] } else { [120.0, 110.0, 160.0] };
+        let [a, b, c] = t.map(to_px);
+        let (x0, x1) = (
+            a.x.min(b.x).min(c.x).floor().max(0.0) as usize,
+            a.x.max(b.x).max(c.x).ceil().min(size as f64 - 1.0) as usize,
+        );
+        let (y0, y1) = (
+            a.y.min(b.y).min(c.y).floor().max(0.0) as usize,
+            a.y.max(b.y).max(c.y).ceil().min(size as f64 - 1.0) as usize,
+        );
+        let area = (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x);
+        if area.abs() < 1e-12 {
+            continue;
+        }
+        for y in y0..=y1 {
+            for x in x0..=x1 {
+                let (px, py) = (x as f64 + 0.5, y as f64 + 0.5);
+                let w0 = ((b.x - px) * (c.y - py) - (b.y - py) * (c.x - px)) / area;
+                let w1 = ((c.x - px) * (a.y - py) - (c.y - py) * (a.x - px)) / area;
+                let w2 = 1.0 - w0 - w1;
+                if w0 < 0.0 || w1 < 0.0 || w2 < 0.0 {
+                    continue;
+                }
+                let z = w0 * a.z + w1 * b.z + w2 * c.z;
+                let i = y * size + x;
+                if z < depth[i] {
+                    depth[i] = z;
+                    for k in 0..3 {
+                        rgb[3 * i + k] = (colour[k] * shade).min(255.0) as u8;
+                    }
+                }
+            }
+        }
+    }
+    image::save_buffer(output, &rgb, size as u32, size as u32, image::ExtendedColorType::Rgb8).expect("write PNG");
+}
