@@ -105,6 +105,26 @@ pub fn clip_to_rect(region: &Region, rect: &Rect) -> Region {
     from_shapes(subject.overlay_as::<i64>(&clip, OverlayRule::Intersect, OverlayFill::NonZero))
 }
 
+/// The part of `a` inside `b`.
+///
+/// ```
+/// use glam::DVec2;
+/// use tracery_core::geom::{Polygon, Region, intersection};
+/// let square = |x: f64| Region::new(vec![Polygon {
+///     outer: vec![DVec2::new(x, 0.0), DVec2::new(x + 2.0, 0.0), DVec2::new(x + 2.0, 2.0), DVec2::new(x, 2.0)],
+///     holes: vec![],
+/// }]);
+/// assert!((intersection(&square(0.0), &square(1.0)).area() - 2.0).abs() < 1e-9);
+/// ```
+pub fn intersection(a: &Region, b: &Region) -> Region {
+    let subject = region_contours(a);
+    let clip = region_contours(b);
+    if subject.is_empty() || clip.is_empty() {
+        return Region::default();
+    }
+    from_shapes(subject.overlay_as::<i64>(&clip, OverlayRule::Intersect, OverlayFill::NonZero))
+}
+
 /// The part of `a` outside `b`.
 pub fn difference(a: &Region, b: &Region) -> Region {
     let subject = region_contours(a);

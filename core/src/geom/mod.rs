@@ -19,7 +19,7 @@ mod topology;
 mod touching;
 mod trace;
 
-pub use boolean::{FillRule, clip_to_rect, difference, resolve_contours, union};
+pub use boolean::{FillRule, clip_to_rect, difference, intersection, resolve_contours, union};
 pub use disc::{arc_step, disc};
 pub use fill::fill_triangles;
 pub use offset::{OFFSET_ARC_TOLERANCE_MM, offset};

@@ -16,7 +16,8 @@ use serde::{Deserialize, Serialize};
 
 use super::{Shade, ShadeError};
 use crate::geom::{
-    PatternTopology, Polygon, Rect, Region, clip_to_rect, count_topology, difference, refine_mapped, union,
+    PatternTopology, Polygon, Rect, Region, clip_to_rect, count_topology, intersection, refine_mapped, ring_contains,
+    union,
 };
 use crate::mesh::{Mesh, MeshError, extrude, split_edges};
 
@@ -205,23 +206,12 @@ pub fn wrap_rows(
     }
     let united = union(&parts.iter().collect::<Vec<_>>());
     // Trimmed to the surface: a row may reach past its band by a hair.
-    let reach = sheet_radius + slant;
-    let frame = Region::new(vec![Polygon {
-        outer: Rect::new(DVec2::splat(-2.0 * reach), DVec2::splat(2.0 * reach)).corners().to_vec(),
-        holes: vec![],
-    }]);
-    let outside = difference(&frame, &Region::new(vec![sheet_band(sheet_radius, 0.0, slant)]));
-    let sheet = difference(&united, &outside);
+    let sheet = intersection(&united, &Region::new(vec![sheet_band(sheet_radius, 0.0, slant)]));
     if sheet.is_empty() {
         return Err(WrapError::Empty);
     }
     let counted = count_topology(&sheet);
-    let openings = sheet
-        .polygons
-        .iter()
-        .flat_map(|p| p.holes.iter())
-        .filter(|h| crate::geom::ring_contains(h, DVec2::ZERO))
-        .count();
+    let openings = sheet.polygons.iter().flat_map(|p| p.holes.iter()).filter(|h| ring_contains(h, DVec2::ZERO)).count();
     let topology = PatternTopology {
         components: counted.components,
         holes: counted.holes - openings.min(counted.holes),

@@ -5,7 +5,7 @@
 
 use rayon::prelude::*;
 
-use super::{Exemplar, Settings, Synthesis, SynthesisError, Target, synthesize};
+use super::{Exemplar, InvalidSetting, Settings, Synthesis, SynthesisError, Target, synthesize};
 use crate::Product;
 use crate::control::{Control, MaybeCancelled};
 use crate::curve::Curve;
@@ -18,6 +18,9 @@ use crate::surface::{RowPlace, ShadeError, ShadeSettings, WrapError, Wrapped, wr
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
 #[non_exhaustive]
 pub enum ShadeSynthesisError {
+    /// A vector-brush setting is out of range.
+    #[error(transparent)]
+    Setting(#[from] InvalidSetting),
     /// The shade's shape or rows are wrong.
     #[error(transparent)]
     Shape(#[from] ShadeError),
@@ -142,8 +145,8 @@ pub fn make_shade(
     settings: &Settings,
     control: &Control,
 ) -> Result<Product, ShadeSynthesisError> {
-    settings.validate().map_err(|e| ShadeSynthesisError::Row { row: 1, source: e.into() })?;
-    shade.validate(settings.band_mm)?;
+    // The shade itself is checked by the first `ShadeSettings::rows`.
+    settings.validate()?;
     let mut timings = Timings::default();
     let mut warnings = Vec::new();
     let mut layout = shade.clone();
@@ -171,11 +174,10 @@ pub fn make_shade(
             }
         }
     }
-    let places: Vec<RowPlace> = rows.iter().map(|(_, place)| *place).collect();
     let mut facts = Facts::default();
     facts.push("rows", Fact::Count(rows.len()));
     facts.push("row_overlap_mm", Fact::Number(layout.row_overlap_mm));
-    facts.push("row_band_mm", Fact::Number(places[0].band_mm));
+    facts.push("row_band_mm", Fact::Number(rows[0].1.band_mm));
     facts.push("slant_height_mm", Fact::Number(shade.shade.slant_height_mm()));
     facts.push("pieces", Fact::Count(rows.iter().map(|(s, _)| s.solution.pieces.len()).sum()));
     facts.push("stretch_percent", Fact::Number(wrapped.stretch_percent));
