@@ -1,7 +1,9 @@
 //! Renders binary STL files to PNG pictures for looking at them: a z-buffer
 //! with Lambert shading, seen from the side and a little above.
 //!
-//! `cargo run -p tracery-core --release --example mesh_png -- IN.stl OUT.png [SIZE_PX]`
+//! `cargo run -p tracery-core --release --example mesh_png -- IN.stl OUT.png [SIZE_PX] [BASE]`
+//!
+//! `BASE`, a built-in base's name or another STL, is drawn in grey with it.
 
 use glam::DVec3;
 
@@ -21,7 +23,16 @@ fn main() {
     let args: Vec<String> = std::env::args().collect();
     let (input, output) = (&args[1], &args[2]);
     let size: usize = args.get(3).and_then(|s| s.parse().ok()).unwrap_or(900);
-    let triangles = read_stl(input);
+    let mut triangles: Vec<([DVec3; 3], bool)> = read_stl(input).into_iter().map(|t| (t, false)).collect();
+    if let Some(base) = args.get(4) {
+        let extra = match tracery_core::surface::builtin_base(base) {
+            Some(mesh) => {
+                mesh.triangles.iter().map(|t| t.map(|i| DVec3::from_array(mesh.vertices[i as usize]))).collect()
+            }
+            None => read_stl(base),
+        };
+        triangles.extend(extra.into_iter().map(|t| (t, true)));
+    }
     // Camera: looking along -y (from the front), tilted 25° down.
     let tilt = 25f64.to_radians();
     let forward = DVec3::new(0.0, tilt.cos(), -tilt.sin());
@@ -29,7 +40,7 @@ fn main() {
     let right = forward.cross(up);
     let project = |p: DVec3| DVec3::new(p.dot(right), p.dot(up), p.dot(forward));
     let (mut lo, mut hi) = (DVec3::splat(f64::MAX), DVec3::splat(f64::MIN));
-    for t in &triangles {
+    for (t, _) in &triangles {
         for &p in t {
             lo = lo.min(project(p));
             hi = hi.max(project(p));
@@ -44,11 +55,15 @@ fn main() {
     let light = DVec3::new(-0.4, -0.8, 0.5).normalize();
     let mut depth = vec![f64::MAX; size * size];
     let mut rgb = vec![255u8; size * size * 3];
-    for t in &triangles {
+    for (t, is_base) in &triangles {
         let n = (t[1] - t[0]).cross(t[2] - t[0]).normalize_or_zero();
         let shade = 0.25 + 0.75 * n.dot(-light).abs();
         let facing = n.dot(forward) < 0.0;
-        let colour = if facing { [200.0, 170.0, 120.0] } else { [120.0, 110.0, 160.0] };
+        let colour = match (is_base, facing) {
+            (true, _) => [175.0, 175.0, 175.0],
+            (false, true) => [200.0, 170.0, 120.0],
+            (false, false) => [120.0, 110.0, 160.0],
+        };
         let [a, b, c] = t.map(to_px);
         let (x0, x1) = (
             a.x.min(b.x).min(c.x).floor().max(0.0) as usize,

@@ -97,6 +97,19 @@ pub enum Warning {
         /// Partial patterns kept per length.
         width: usize,
     },
+    /// Points given for a curve on a surface were not on it, and were moved
+    /// to the nearest surface point.
+    PointsSnapped {
+        /// How far each point moved, mm, in the order given.
+        moved_mm: Vec<f64>,
+    },
+    /// The band was wider than the surface allows along the curve, and was narrowed.
+    BandNarrowedOnSurface {
+        /// The band asked for, mm.
+        asked_mm: f64,
+        /// The band used, mm.
+        used_mm: f64,
+    },
 }
 
 impl std::fmt::Display for Warning {
@@ -148,6 +161,19 @@ impl std::fmt::Display for Warning {
             Warning::SearchBounded { width } => write!(
                 f,
                 "the exact search needed more memory than allowed, so only the {width} cheapest partial patterns of each length were kept: the pattern meets every target, but a better-matching one may exist"
+            ),
+            Warning::PointsSnapped { moved_mm } => {
+                let most = moved_mm.iter().copied().fold(0.0, f64::max);
+                let list: Vec<String> = moved_mm.iter().map(|d| format!("{d:.2}")).collect();
+                write!(
+                    f,
+                    "points off the surface were moved onto it (at most {most:.2} mm; each point, mm: {})",
+                    list.join(", ")
+                )
+            }
+            Warning::BandNarrowedOnSurface { asked_mm, used_mm } => write!(
+                f,
+                "the curve turns too tightly on the surface for a {asked_mm:.1} mm band: it was narrowed to {used_mm:.1} mm"
             ),
         }
     }

@@ -13,6 +13,9 @@ pub struct StlCheck {
     pub open_edges: usize,
     /// Edges whose two triangles run the same way along them.
     pub misoriented_edges: usize,
+    /// Vertices less edges plus triangles: 2 per shell less 2 per handle
+    /// (a hole through a pattern is a handle of its solid).
+    pub euler: i64,
 }
 
 pub fn check_stl(path: &Path) -> StlCheck {
@@ -78,5 +81,6 @@ pub fn check_stl(path: &Path) -> StlCheck {
         }
     }
     let shells = (0..triangles.len()).filter(|&t| find(&mut parent, t) == t).count();
-    StlCheck { triangles: count, shells, open_edges, misoriented_edges }
+    let euler = ids.len() as i64 - owner.len() as i64 + count as i64;
+    StlCheck { triangles: count, shells, open_edges, misoriented_edges, euler }
 }

@@ -5,6 +5,7 @@
 mod output;
 mod raster;
 mod shade;
+mod surface;
 mod synth;
 
 use anyhow::{Context, Result};
@@ -14,6 +15,7 @@ use tracery_core::vector_brush::{BUILTIN_NAMES, PieceSet, SliceOptions, builtin}
 pub use output::{OutputArgs, Report};
 pub use raster::RasterArgs;
 pub use shade::ShadeArgs;
+pub use surface::SurfaceArgs;
 pub use synth::SynthArgs;
 
 /// Tracery: synthesize printable patterns. Without a command, opens the app.
@@ -38,6 +40,9 @@ enum Command {
         /// The raster brush's exemplars instead of the vector brush's.
         #[arg(long)]
         raster: bool,
+        /// The built-in base models for `tracery surface` instead.
+        #[arg(long, conflicts_with = "raster")]
+        bases: bool,
     },
     /// Vector brush: synthesize a pattern along a curve and write STL, SVG and a report.
     Synth(Box<SynthArgs>),
@@ -45,12 +50,31 @@ enum Command {
     Raster(Box<RasterArgs>),
     /// Lamp shade: rows of vector-brush pattern wrapped onto a cylinder or a cone, written as STL, 3MF, SVG (laid flat) and a report.
     Shade(Box<ShadeArgs>),
+    /// Pattern on a 3D model: vector-brush pattern along a curve through points picked on a mesh, written as a shell (STL, 3MF), the flat pattern (SVG) and a report.
+    Surface(Box<SurfaceArgs>),
 }
 
 fn list_raster() -> Result<()> {
     for name in tracery_core::raster_brush::BUILTIN_NAMES {
         let e = tracery_core::raster_brush::builtin(name).with_context(|| format!("painting built-in '{name}'"))?;
         println!("{name:10} {:4} x {:3} px {:3.0}% opaque", e.width(), e.height(), 100.0 * e.coverage());
+    }
+    Ok(())
+}
+
+fn list_bases() -> Result<()> {
+    for name in tracery_core::surface::BASE_NAMES {
+        let mesh = tracery_core::surface::builtin_base(name).with_context(|| format!("building base '{name}'"))?;
+        let (low, high) = mesh.vertices.iter().fold(([f64::INFINITY; 3], [f64::NEG_INFINITY; 3]), |(lo, hi), v| {
+            (std::array::from_fn(|k| lo[k].min(v[k])), std::array::from_fn(|k| hi[k].max(v[k])))
+        });
+        println!(
+            "{name:10} {:6} triangles  {:.0} x {:.0} x {:.0} mm",
+            mesh.triangles.len(),
+            high[0] - low[0],
+            high[1] - low[1],
+            high[2] - low[2]
+        );
     }
     Ok(())
 }
@@ -73,11 +97,13 @@ fn list() -> Result<()> {
 /// Runs the command line.
 pub fn run(cli: Cli) -> Result<()> {
     match cli.command {
-        Some(Command::List { raster: false }) => list(),
-        Some(Command::List { raster: true }) => list_raster(),
+        Some(Command::List { bases: true, .. }) => list_bases(),
+        Some(Command::List { raster: false, .. }) => list(),
+        Some(Command::List { raster: true, .. }) => list_raster(),
         Some(Command::Synth(args)) => synth::run(*args),
         Some(Command::Raster(args)) => raster::run(*args),
         Some(Command::Shade(args)) => shade::run(*args),
+        Some(Command::Surface(args)) => surface::run(*args),
         None => Ok(()),
     }
 }

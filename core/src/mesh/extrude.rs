@@ -21,6 +21,11 @@ pub enum MeshError {
     /// Thickness is not a positive number.
     #[error("the thickness {0} mm must be a positive number")]
     Thickness(f64),
+    /// Distinct points of the solid fall on one point once written as `f32`.
+    #[error(
+        "{0} point(s) of the pattern fall together once laid on the surface, which would leave the solid open; try another seed or a narrower band"
+    )]
+    Collapsed(usize),
     /// The tessellator failed on the pattern's outline.
     #[error("the pattern's outline could not be triangulated: {0}")]
     Tessellation(String),
@@ -48,15 +53,38 @@ pub enum MeshError {
 /// assert!(mesh.sanity_check().is_ok());
 /// ```
 pub fn extrude(region: &Region, thickness_mm: f64) -> Result<Mesh, MeshError> {
+    extrude_with(region, thickness_mm, None)
+}
+
+/// Like [`extrude`], with the top and bottom cut into well-shaped
+/// triangles (no angle under 20°, no edge much over `edge_mm`; spade's
+/// Delaunay refinement), for a solid that will be bent: a long sliver
+/// split until it follows a curved surface crumbles into thousands.
+///
+/// ```
+/// use tracery_core::mesh::{extrude, extrude_fine};
+/// use tracery_core::DVec2;
+/// use tracery_core::geom::{Polygon, Region};
+/// let strip = vec![DVec2::new(0.0, 0.0), DVec2::new(40.0, 0.0), DVec2::new(40.0, 2.0), DVec2::new(0.0, 2.0)];
+/// let region = Region::new(vec![Polygon { outer: strip, holes: vec![] }]);
+/// let mesh = extrude_fine(&region, 1.0, 1.0).unwrap();
+/// assert!(mesh.sanity_check().is_ok());
+/// assert!(mesh.triangles.len() > extrude(&region, 1.0).unwrap().triangles.len());
+/// ```
+pub fn extrude_fine(region: &Region, thickness_mm: f64, edge_mm: f64) -> Result<Mesh, MeshError> {
+    extrude_with(region, thickness_mm, Some(edge_mm))
+}
+
+fn extrude_with(region: &Region, thickness_mm: f64, fine: Option<f64>) -> Result<Mesh, MeshError> {
     if !(thickness_mm.is_finite() && thickness_mm > 0.0) {
         return Err(MeshError::Thickness(thickness_mm));
     }
-    match extrude_exactly(region, thickness_mm, false) {
+    match extrude_exactly(region, thickness_mm, false, fine) {
         Err(MeshError::Tessellation(_)) => {
             let repaired = repaired(region);
-            match extrude_exactly(&repaired, thickness_mm, false) {
+            match extrude_exactly(&repaired, thickness_mm, false, fine) {
                 // Still a vertex on another ring's edge: make it a shared point.
-                Err(MeshError::Tessellation(_)) => extrude_exactly(&repaired, thickness_mm, true),
+                Err(MeshError::Tessellation(_)) => extrude_exactly(&repaired, thickness_mm, true, fine),
                 result => result,
             }
         }
@@ -96,7 +124,12 @@ fn repaired(region: &Region) -> Region {
     crate::geom::union(&[&Region::new(polygons)])
 }
 
-fn extrude_exactly(region: &Region, thickness_mm: f64, split_junctions: bool) -> Result<Mesh, MeshError> {
+fn extrude_exactly(
+    region: &Region,
+    thickness_mm: f64,
+    split_junctions: bool,
+    fine: Option<f64>,
+) -> Result<Mesh, MeshError> {
     // STL stores `f32`: vertices are rounded to it first and welded by exact
     // position, so two vertices never become one only in the file.
     let mut rounded: Vec<Vec<glam::DVec2>> = region
@@ -167,6 +200,9 @@ fn extrude_exactly(region: &Region, thickness_mm: f64, split_junctions: bool) ->
             return Err(MeshError::Tessellation("a vertex lies on another ring's edge".into()));
         }
     }
+    if let Some(edge_mm) = fine {
+        return Ok(refined(cdt, edge_mm, thickness_mm));
+    }
     // Flood from the outer face: crossing a ring edge toggles inside/outside.
     let mut inside: Vec<Option<bool>> = vec![None; cdt.all_faces().len()];
     let mut queue = std::collections::VecDeque::new();
@@ -216,4 +252,75 @@ fn extrude_exactly(region: &Region, thickness_mm: f64, split_junctions: bool) ->
         }
     }
     Ok(mesh)
+}
+
+/// Triangles smaller than this are never refined, mm².
+const MIN_REFINED_AREA_MM2: f64 = 1e-3;
+
+/// Most vertices refinement may add: a bound on time and memory whatever
+/// the outline.
+const MAX_REFINEMENT_VERTICES: usize = 400_000;
+
+/// The solid of a refined triangulation: inside faces (refinement's own
+/// flood from the outside) top and bottom, walls along every constraint
+/// edge (split ones included) from the side of its inside face.
+fn refined(mut cdt: ConstrainedDelaunayTriangulation<Point2<f64>>, edge_mm: f64, thickness_mm: f64) -> Mesh {
+    use spade::{AngleLimit, RefinementParameters};
+    let result = cdt.refine(
+        RefinementParameters::<f64>::new()
+            .exclude_outer_faces(true)
+            .with_angle_limit(AngleLimit::from_deg(20.0))
+            .with_max_allowed_area(0.5 * edge_mm * edge_mm)
+            // Parts a micrometre apart (touching parts moved apart) are left
+            // alone: splitting around them would make points closer than a
+            // printer, or an STL's f32, can tell apart.
+            .with_min_required_area(MIN_REFINED_AREA_MM2)
+            .with_max_additional_vertices(MAX_REFINEMENT_VERTICES),
+    );
+    let excluded: std::collections::HashSet<_> = result.excluded_faces.into_iter().collect();
+    let count = cdt.num_vertices() as u32;
+    let mut mesh = Mesh { vertices: Vec::with_capacity(2 * count as usize), triangles: Vec::new() };
+    mesh.vertices.extend(cdt.vertices().map(|v| [v.position().x, v.position().y, 0.0]));
+    mesh.vertices.extend(cdt.vertices().map(|v| [v.position().x, v.position().y, thickness_mm]));
+    for face in cdt.inner_faces() {
+        if excluded.contains(&face.fix()) {
+            continue;
+        }
+        let [a, b, c] = face.vertices().map(|v| v.fix().index() as u32);
+        mesh.triangles.push([a + count, b + count, c + count]);
+        mesh.triangles.push([a, c, b]);
+    }
+    let inside = |face: Option<spade::handles::FixedFaceHandle<spade::handles::InnerTag>>| {
+        face.is_some_and(|f| !excluded.contains(&f))
+    };
+    for d in cdt.directed_edges() {
+        // A wall where the material is on the edge's left and not on its right.
+        if !d.is_constraint_edge()
+            || !inside(d.face().as_inner().map(|f| f.fix()))
+            || inside(d.rev().face().as_inner().map(|f| f.fix()))
+        {
+            continue;
+        }
+        let (a, b) = (d.from().fix().index() as u32, d.to().fix().index() as u32);
+        mesh.triangles.push([a, b, b + count]);
+        mesh.triangles.push([a, b + count, a + count]);
+    }
+    // Vertices refinement placed outside the material are left out.
+    compact(mesh)
+}
+
+/// Drops vertices no triangle uses.
+fn compact(mesh: Mesh) -> Mesh {
+    let mut index = vec![u32::MAX; mesh.vertices.len()];
+    let mut out = Mesh { vertices: Vec::new(), triangles: Vec::with_capacity(mesh.triangles.len()) };
+    for t in &mesh.triangles {
+        out.triangles.push(t.map(|v| {
+            if index[v as usize] == u32::MAX {
+                index[v as usize] = out.vertices.len() as u32;
+                out.vertices.push(mesh.vertices[v as usize]);
+            }
+            index[v as usize]
+        }));
+    }
+    out
 }

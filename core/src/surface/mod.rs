@@ -1,11 +1,32 @@
 //! Patterns on 3D objects: planar patterns laid on surfaces and made solid
-//! there. Today: lamp shades, rows of pattern made along circles and wrapped
-//! onto a cylinder or a cone ([`Shade`], [`wrap_rows`]).
+//! there.
+//!
+//! - Lamp shades: rows of pattern made along circles and wrapped onto a
+//!   cylinder or a cone ([`Shade`], [`wrap_rows`]).
+//! - Curves drawn on a base model ([`builtin_base`] or a mesh read with
+//!   [`crate::mesh::read_mesh_file`]): checked ([`SurfaceMesh`]), the part
+//!   around the picked points laid flat ([`Chart`]), a spline traced on it
+//!   ([`trace`]), smooth frames along it ([`Frames`]), all in [`draw_on`];
+//!   then a band made along it laid on the surface ([`lay_band`]).
 
+mod band;
+mod bases;
+mod chart;
+mod drawn;
+mod frames;
 mod shade;
 mod sheet;
+mod surface_mesh;
+mod trace;
 
+pub use band::{BandOnSurface, Sheet, lay_band};
+pub use bases::{BASE_NAMES, builtin_base};
+pub use chart::{Chart, ChartError, MIN_POINTS};
+pub use drawn::{Drawn, DrawnError, SNAP_REPORT_MM, SurfaceSettings, draw_on};
+pub use frames::Frames;
 pub use shade::{MAX_SHADE_MM, Shade, ShadeError};
 pub use sheet::{
     CHORD_TOLERANCE_MM, RowPlace, SHEET_STEP_MM, SHEET_TOLERANCE_MM, ShadeSettings, WrapError, Wrapped, wrap_rows,
 };
+pub use surface_mesh::{MAX_BASE_TRIANGLES, SurfaceError, SurfaceMesh, SurfacePoint};
+pub use trace::{SurfaceCurve, TraceError, trace};

@@ -1,0 +1,97 @@
+//! `tracery surface`: a vector-brush pattern along a curve drawn on a 3D
+//! model, through picked points, as a printable shell on its surface.
+//! Every flag left out takes its value from [`SurfaceSettings::default`]
+//! and the vector brush's `Settings::default`.
+
+use std::path::Path;
+
+use anyhow::{Result, bail};
+use clap::{Parser, ValueEnum};
+use tracery_core::control::Control;
+use tracery_core::mesh::{Mesh, read_mesh_file};
+use tracery_core::print::check_solid;
+use tracery_core::surface::{BASE_NAMES, SurfaceMesh, SurfaceSettings, builtin_base};
+use tracery_core::vector_brush::make_on_surface;
+
+use super::output::{OutputArgs, write_outputs};
+use super::synth::{BrushArgs, load_exemplar};
+
+/// What `tracery surface` writes.
+#[derive(ValueEnum, Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum SurfaceMode {
+    /// The pattern alone, a shell conforming to the surface.
+    #[default]
+    Pattern,
+}
+
+/// Flags of `tracery surface`.
+#[derive(Parser, Debug, Clone, PartialEq)]
+#[command(allow_negative_numbers = true)]
+pub struct SurfaceArgs {
+    /// An SVG file, or the name of a built-in exemplar (see `tracery list`).
+    #[arg(long)]
+    pub exemplar: String,
+    /// The model: an STL or OBJ file (mm), or a built-in base (see `tracery list --bases`).
+    #[arg(long)]
+    pub mesh: String,
+    /// Points of the curve, mm, as "x,y,z;x,y,z;..."; points off the surface snap onto it.
+    #[arg(long)]
+    pub points: String,
+    /// Close the curve back to the first point (a ring around a vase).
+    #[arg(long)]
+    pub closed: bool,
+    /// Turn the band about the curve, degrees [default: 0, lying on the surface].
+    #[arg(long)]
+    pub twist: Option<f64>,
+    /// What to make.
+    #[arg(long, value_enum, default_value_t)]
+    pub mode: SurfaceMode,
+    #[command(flatten)]
+    pub output: OutputArgs,
+    #[command(flatten)]
+    pub brush: BrushArgs,
+}
+
+impl SurfaceArgs {
+    /// The curve these flags ask for.
+    pub fn surface_settings(&self) -> Result<SurfaceSettings> {
+        let mut s = SurfaceSettings::default();
+        s.points_mm = SurfaceSettings::parse_points(&self.points)?;
+        s.closed = self.closed;
+        s.twist_deg = self.twist.unwrap_or(s.twist_deg);
+        s.validate()?;
+        Ok(s)
+    }
+}
+
+/// A built-in base by name, or a mesh file.
+pub fn load_base(spec: &str) -> Result<Mesh> {
+    if let Some(mesh) = builtin_base(spec) {
+        return Ok(mesh);
+    }
+    if !Path::new(spec).exists() {
+        bail!("no mesh file or built-in base named '{spec}' (built-ins: {})", BASE_NAMES.join(", "));
+    }
+    Ok(read_mesh_file(Path::new(spec))?)
+}
+
+/// Runs `tracery surface`.
+pub fn run(args: SurfaceArgs) -> Result<()> {
+    if args.output.along.is_some() {
+        bail!("tracery surface takes its curve from --points on --mesh, not --along");
+    }
+    if args.output.print.thicken || !args.output.print.jump_ring.is_empty() {
+        bail!("--thicken and --jump-ring are not available on surfaces yet");
+    }
+    let settings = args.brush.settings();
+    settings.validate()?;
+    let drawn = args.surface_settings()?;
+    args.output.svg_options()?;
+    let print = args.output.print.settings()?;
+    let surface = SurfaceMesh::new(load_base(&args.mesh)?)?;
+    let exemplar = load_exemplar(&args.exemplar)?;
+    let product = make_on_surface(&exemplar, &surface, &drawn, &settings, &Control::default())?;
+    let product = check_solid(product, &print, settings.thickness_mm);
+    let spec = format!("{}:{}{}", args.mesh, args.points, if drawn.closed { " closed" } else { "" });
+    write_outputs("surface", &exemplar.name, &spec, &args.output, &product)
+}

@@ -1,0 +1,151 @@
+//! A curve drawn on a base model, from the points a person picked to the
+//! smooth frames a band is laid along: snap, chart, trace, frame, and the
+//! band narrowed where the curve turns too tightly for it.
+
+use serde::{Deserialize, Serialize};
+
+use super::{Chart, ChartError, Frames, SurfaceCurve, SurfaceMesh, TraceError, trace};
+use crate::report::{Timings, Warning};
+
+/// How a curve is drawn on a surface: one settings struct for the command
+/// line and the app.
+///
+/// ```
+/// use tracery_core::surface::SurfaceSettings;
+/// let mut s = SurfaceSettings::default();
+/// s.points_mm = SurfaceSettings::parse_points("0,30,20; 30,0,20").unwrap();
+/// assert_eq!(s.points_mm.len(), 2);
+/// assert!(s.validate().is_ok());
+/// ```
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(default)]
+#[non_exhaustive]
+pub struct SurfaceSettings {
+    /// The picked points, mm, in order; snapped onto the surface.
+    pub points_mm: Vec<[f64; 3]>,
+    /// Whether the curve closes back to the first point (a ring around a vase).
+    pub closed: bool,
+    /// Turns the band about the curve, degrees (0: lying on the surface).
+    pub twist_deg: f64,
+    /// Longest step of the traced curve between mesh edges, mm.
+    pub step_mm: f64,
+}
+
+impl Default for SurfaceSettings {
+    fn default() -> Self {
+        SurfaceSettings { points_mm: Vec::new(), closed: false, twist_deg: 0.0, step_mm: 0.5 }
+    }
+}
+
+/// Points closer to the surface than this were on it, mm: a point moved
+/// further is reported.
+pub const SNAP_REPORT_MM: f64 = 1e-3;
+
+/// Why a curve could not be drawn on a surface.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+#[non_exhaustive]
+pub enum DrawnError {
+    /// Bad points or settings.
+    #[error("{0}")]
+    Setting(String),
+    /// No chart.
+    #[error(transparent)]
+    Chart(#[from] ChartError),
+    /// No curve.
+    #[error(transparent)]
+    Trace(#[from] TraceError),
+}
+
+impl SurfaceSettings {
+    /// Reads points written `x,y,z;x,y,z;...` (mm).
+    pub fn parse_points(text: &str) -> Result<Vec<[f64; 3]>, DrawnError> {
+        text.split(';')
+            .map(str::trim)
+            .filter(|p| !p.is_empty())
+            .enumerate()
+            .map(|(k, p)| {
+                let numbers: Vec<f64> =
+                    p.split(',').map(|c| c.trim().parse::<f64>()).collect::<Result<_, _>>().map_err(|_| {
+                        DrawnError::Setting(format!("point {} ({p}) is not three numbers x,y,z", k + 1))
+                    })?;
+                match numbers[..] {
+                    [x, y, z] if [x, y, z].iter().all(|c| c.is_finite()) => Ok([x, y, z]),
+                    _ => Err(DrawnError::Setting(format!("point {} ({p}) is not three numbers x,y,z", k + 1))),
+                }
+            })
+            .collect()
+    }
+
+    /// Checks the settings.
+    pub fn validate(&self) -> Result<(), DrawnError> {
+        let least = if self.closed { 3 } else { 2 };
+        if self.points_mm.len() < least {
+            return Err(DrawnError::Setting(format!(
+                "{} curve needs at least {least} points; {} given",
+                if self.closed { "a closed" } else { "an open" },
+                self.points_mm.len()
+            )));
+        }
+        if self.points_mm.iter().flatten().any(|c| !c.is_finite()) {
+            return Err(DrawnError::Setting("a point is not a finite number".into()));
+        }
+        if !(self.twist_deg.is_finite() && self.twist_deg.abs() <= 90.0) {
+            return Err(DrawnError::Setting(format!("twist {} is not between -90 and 90 degrees", self.twist_deg)));
+        }
+        if !(self.step_mm.is_finite() && self.step_mm > 0.0) {
+            return Err(DrawnError::Setting(format!("curve step {} mm is not positive", self.step_mm)));
+        }
+        Ok(())
+    }
+}
+
+/// A curve drawn on a surface, ready for a band.
+#[derive(Clone, Debug)]
+pub struct Drawn {
+    /// The curve, on the surface.
+    pub curve: SurfaceCurve,
+    /// Its frames.
+    pub frames: Frames,
+    /// The band to lay along it, mm (narrowed where needed).
+    pub band_mm: f64,
+    /// How far each picked point moved onto the surface, mm.
+    pub moved_mm: Vec<f64>,
+    /// Triangles in the chart that was laid flat.
+    pub chart_triangles: usize,
+    /// What the person should know.
+    pub warnings: Vec<Warning>,
+}
+
+/// Share of the inverse turning a half band may reach: the band's inner
+/// edge stops short of the centre of the curve's turn.
+const FOLD_MARGIN: f64 = 0.8;
+
+/// Draws the curve of `settings` on `surface` for a band `band_mm` wide.
+pub fn draw_on(
+    surface: &SurfaceMesh,
+    settings: &SurfaceSettings,
+    band_mm: f64,
+    timings: &mut Timings,
+) -> Result<Drawn, DrawnError> {
+    settings.validate()?;
+    let mut warnings = Vec::new();
+    let snapped: Vec<_> = settings.points_mm.iter().map(|&p| surface.closest_point(p)).collect();
+    let moved_mm: Vec<f64> = snapped
+        .iter()
+        .zip(&settings.points_mm)
+        .map(|(s, p)| s.position_mm.distance(glam::DVec3::from_array(*p)))
+        .collect();
+    if moved_mm.iter().any(|&d| d > SNAP_REPORT_MM) {
+        warnings.push(Warning::PointsSnapped { moved_mm: moved_mm.clone() });
+    }
+    let chart = timings.time("chart", || Chart::around(surface, &snapped, settings.closed, 1.5 * band_mm))?;
+    let curve = timings.time("trace", || trace(surface, &chart, &snapped, settings.closed, settings.step_mm))?;
+    let frames = timings.time("frames", || Frames::along(&curve, 0.5 * band_mm, settings.twist_deg));
+    let turning = frames.max_turning_per_mm(0.5 * band_mm);
+    let mut band = band_mm;
+    if turning > 0.0 && 0.5 * band * turning > FOLD_MARGIN {
+        band = 2.0 * FOLD_MARGIN / turning;
+        warnings.push(Warning::BandNarrowedOnSurface { asked_mm: band_mm, used_mm: band });
+    }
+    Ok(Drawn { curve, frames, band_mm: band, moved_mm, chart_triangles: chart.triangle_count(), warnings })
+}

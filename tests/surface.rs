@@ -1,0 +1,179 @@
+//! `tracery surface` end to end: patterns along curves picked on built-in
+//! bases and on a mesh file. The STL is checked apart from the mesh code
+//! (closed, consistently oriented, its shells and handles counted against
+//! the planned topology), every vertex must sit on the base's surface or
+//! within the thickness above it (distances from parry's closest point,
+//! not from the code that laid the band), and bad input fails with one line.
+
+#[path = "common/cli.rs"]
+mod cli;
+#[path = "common/stl.rs"]
+mod stl;
+use cli::{field, tempdir, tracery};
+use stl::check_stl;
+use tracery_core::surface::{SurfaceMesh, builtin_base};
+
+/// Every vertex of a binary STL.
+fn stl_vertices(path: &std::path::Path) -> Vec<[f64; 3]> {
+    let data = std::fs::read(path).unwrap();
+    let count = u32::from_le_bytes(data[80..84].try_into().unwrap()) as usize;
+    let f = |at: usize| f64::from(f32::from_le_bytes(data[at..at + 4].try_into().unwrap()));
+    (0..count)
+        .flat_map(|t| (0..3).map(move |k| 84 + 50 * t + 12 + 12 * k))
+        .map(|at| [f(at), f(at + 4), f(at + 8)])
+        .collect()
+}
+
+/// Runs `tracery surface ARGS --report REPORT`, which must succeed, and returns the report.
+fn surface_report(args: &[&str], report: &std::path::Path) -> String {
+    let out = tracery().arg("surface").args(args).arg("--report").arg(report).output().unwrap();
+    assert!(out.status.success(), "{args:?}: {}", String::from_utf8_lossy(&out.stderr));
+    std::fs::read_to_string(report).unwrap()
+}
+
+/// Checks the shell at `stl` against the report and the base it lies on.
+fn check_shell(stl: &std::path::Path, json: &str, base: &str, thickness_mm: f64) {
+    let check = check_stl(stl);
+    assert_eq!((check.open_edges, check.misoriented_edges), (0, 0), "{check:?}");
+    let components: i64 = field(json, "components").parse().unwrap();
+    let holes: i64 = field(json, "holes").parse().unwrap();
+    let openings: i64 = field(json, "loop_openings").parse().unwrap();
+    assert_eq!(check.shells as i64, components, "{check:?} {json}");
+    // Each hole of the pattern, and the ring a closed curve makes, is a handle.
+    assert_eq!(check.euler, 2 * components - 2 * (holes + openings), "{check:?} {json}");
+    let surface = SurfaceMesh::new(builtin_base(base).unwrap()).unwrap();
+    // f32 rounding in the file, and the band bent between mesh edges.
+    let slack = 0.02;
+    for v in stl_vertices(stl) {
+        let on = surface.closest_point(v).position_mm;
+        let off = ((on.x - v[0]).powi(2) + (on.y - v[1]).powi(2) + (on.z - v[2]).powi(2)).sqrt();
+        assert!(off <= thickness_mm + slack, "vertex {v:?} is {off} mm from the {base}");
+    }
+}
+
+#[test]
+fn a_ring_around_the_vase_is_one_closed_shell_on_it() {
+    let dir = tempdir("surface-vase");
+    let (stl, three_mf) = (dir.join("v.stl"), dir.join("v.3mf"));
+    let path = |p: &std::path::Path| p.display().to_string();
+    let json = surface_report(
+        &[
+            "--exemplar",
+            "chain",
+            "--mesh",
+            "vase",
+            "--points",
+            "30,0,25;0,30,25;-30,0,25;0,-30,25",
+            "--closed",
+            "--band",
+            "8",
+            "--thickness",
+            "1.5",
+            "--stl",
+            &path(&stl),
+            "--3mf",
+            &path(&three_mf),
+        ],
+        &dir.join("v.json"),
+    );
+    assert_eq!(field(&json, "components"), "1", "{json}");
+    assert_eq!(field(&json, "loop_openings"), "1", "{json}");
+    check_shell(&stl, &json, "vase", 1.5);
+    // A ring at 25 mm: the curve stayed near that height all around.
+    let zs: Vec<f64> = stl_vertices(&stl).iter().map(|v| v[2]).collect();
+    let (low, high) = zs.iter().fold((f64::MAX, f64::MIN), |(l, h), &z| (l.min(z), h.max(z)));
+    assert!(low > 15.0 && high < 35.0, "the band spans z {low}..{high}");
+    assert!(three_mf.exists());
+}
+
+#[test]
+fn an_open_curve_keeps_its_targets_on_the_cone() {
+    let dir = tempdir("surface-open");
+    let path = |p: &std::path::Path| p.display().to_string();
+    for (base, exemplar, points, holes) in [("cone", "chain", "25,0,15;0,-22,25;-20,0,35", "8")] {
+        let stl = dir.join(format!("{base}.stl"));
+        let json = surface_report(
+            &[
+                "--exemplar",
+                exemplar,
+                "--mesh",
+                base,
+                "--points",
+                points,
+                "--band",
+                "8",
+                "--holes",
+                holes,
+                "--stl",
+                &path(&stl),
+            ],
+            &dir.join(format!("{base}.json")),
+        );
+        assert_eq!(field(&json, "components"), "1", "{json}");
+        if holes != "any" {
+            assert_eq!(field(&json, "holes"), holes, "{json}");
+        }
+        check_shell(&stl, &json, base, 2.0);
+    }
+}
+
+#[test]
+fn a_mesh_file_is_read_and_points_off_it_are_snapped_and_reported() {
+    let dir = tempdir("surface-file");
+    let base = dir.join("cylinder.stl");
+    let mut bytes = Vec::new();
+    tracery_core::export::write_stl(&builtin_base("cylinder").unwrap(), &mut bytes).unwrap();
+    std::fs::write(&base, bytes).unwrap();
+    let stl = dir.join("out.stl");
+    let json = surface_report(
+        &[
+            "--exemplar",
+            "chain",
+            "--mesh",
+            &base.display().to_string(),
+            "--points",
+            "28,0,20;0,-28,30",
+            "--band",
+            "6",
+            "--stl",
+            &stl.display().to_string(),
+        ],
+        &dir.join("out.json"),
+    );
+    assert!(json.contains("points off the surface were moved onto it (at most 3.00 mm"), "{json}");
+    assert_eq!(field(&json, "points_moved_mm"), "3.000,3.000", "{json}");
+    check_shell(&stl, &json, "cylinder", 2.0);
+}
+
+#[test]
+fn bad_surfaces_fail_with_one_line_and_no_file() {
+    let dir = tempdir("surface-bad");
+    let stl = dir.join("bad.stl");
+    // Two tetrahedra sharing one edge: three triangles on it... four.
+    let crowded = dir.join("crowded.obj");
+    std::fs::write(
+        &crowded,
+        "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nv 0 -1 0\nv 0 0 -1\nf 1 3 2\nf 1 2 4\nf 1 2 5\nf 1 2 6\n",
+    )
+    .unwrap();
+    let text = dir.join("not.stl");
+    std::fs::write(&text, "hello").unwrap();
+    let crowded = crowded.display().to_string();
+    let text = text.display().to_string();
+    for (args, says) in [
+        (vec!["--mesh", "teapot", "--points", "0,0,0;1,1,1"], "no mesh file or built-in base named 'teapot'"),
+        (vec!["--mesh", "egg", "--points", "0,0,0"], "at least 2 points"),
+        (vec!["--mesh", "egg", "--points", "0,0,0;1,1,1;2,2,2", "--closed", "--twist", "200"], "twist 200"),
+        (vec!["--mesh", "egg", "--points", "1,2;3,4,5"], "point 1 (1,2) is not three numbers"),
+        (vec!["--mesh", &crowded, "--points", "0,0,0;1,0,0"], "shared by more than two triangles"),
+        (vec!["--mesh", &text, "--points", "0,0,0;1,0,0"], "is not a valid STL file"),
+        (vec!["--mesh", "egg", "--points", "0,0,0;1,1,1", "--along", "line:10"], "not --along"),
+    ] {
+        let out = tracery().args(["surface", "--exemplar", "lace", "--stl"]).arg(&stl).args(&args).output().unwrap();
+        let stderr = String::from_utf8_lossy(&out.stderr);
+        assert!(!out.status.success(), "{args:?} succeeded");
+        assert_eq!(stderr.lines().count(), 1, "{args:?}: {stderr}");
+        assert!(stderr.contains(says), "{args:?}: {stderr}");
+        assert!(!stl.exists(), "{args:?} left a file");
+    }
+}
