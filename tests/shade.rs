@@ -10,18 +10,7 @@ mod stl;
 #[path = "common/threemf.rs"]
 mod threemf;
 use cli::{field, tempdir, tracery};
-use stl::check_stl;
-
-/// Every vertex of a binary STL.
-fn stl_vertices(path: &std::path::Path) -> Vec<[f64; 3]> {
-    let data = std::fs::read(path).unwrap();
-    let count = u32::from_le_bytes(data[80..84].try_into().unwrap()) as usize;
-    let f = |at: usize| f64::from(f32::from_le_bytes(data[at..at + 4].try_into().unwrap()));
-    (0..count)
-        .flat_map(|t| (0..3).map(move |k| 84 + 50 * t + 12 + 12 * k))
-        .map(|at| [f(at), f(at + 4), f(at + 8)])
-        .collect()
-}
+use stl::{check_stl, stl_vertices};
 
 /// Runs `tracery shade ARGS --report REPORT`, which must succeed, and returns the report.
 fn shade_report(args: &[&str], report: &std::path::Path) -> String {

@@ -7,16 +7,13 @@
 
 use glam::DVec3;
 
+/// The triangles of an STL file, by the project's own reader.
 fn read_stl(path: &str) -> Vec<[DVec3; 3]> {
-    let bytes = std::fs::read(path).expect("read STL");
-    let count = u32::from_le_bytes(bytes[80..84].try_into().unwrap()) as usize;
-    let f = |o: usize| f32::from_le_bytes(bytes[o..o + 4].try_into().unwrap()) as f64;
-    (0..count)
-        .map(|t| {
-            let base = 84 + 50 * t + 12;
-            [0, 1, 2].map(|k| DVec3::new(f(base + 12 * k), f(base + 12 * k + 4), f(base + 12 * k + 8)))
-        })
-        .collect()
+    triangles_of(&tracery_core::mesh::read_stl(&std::fs::read(path).expect("read STL"), path).expect("parse STL"))
+}
+
+fn triangles_of(mesh: &tracery_core::mesh::Mesh) -> Vec<[DVec3; 3]> {
+    mesh.triangles.iter().map(|t| t.map(|i| DVec3::from_array(mesh.vertices[i as usize]))).collect()
 }
 
 fn main() {

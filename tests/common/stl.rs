@@ -1,6 +1,8 @@
 //! An STL check written apart from the mesh code: parse the binary file,
 //! weld vertices by their exact coordinates, and look at every edge.
 
+#![allow(dead_code)]
+
 use std::collections::HashMap;
 use std::path::Path;
 
@@ -83,4 +85,15 @@ pub fn check_stl(path: &Path) -> StlCheck {
     let shells = (0..triangles.len()).filter(|&t| find(&mut parent, t) == t).count();
     let euler = ids.len() as i64 - owner.len() as i64 + count as i64;
     StlCheck { triangles: count, shells, open_edges, misoriented_edges, euler }
+}
+
+/// Every vertex of a binary STL, three per triangle, in file order.
+pub fn stl_vertices(path: &Path) -> Vec<[f64; 3]> {
+    let data = std::fs::read(path).unwrap();
+    let count = u32::from_le_bytes(data[80..84].try_into().unwrap()) as usize;
+    let f = |at: usize| f64::from(f32::from_le_bytes(data[at..at + 4].try_into().unwrap()));
+    (0..count)
+        .flat_map(|t| (0..3).map(move |k| 84 + 50 * t + 12 + 12 * k))
+        .map(|at| [f(at), f(at + 4), f(at + 8)])
+        .collect()
 }

@@ -56,6 +56,32 @@ impl Mesh {
         self.vertices.iter().map(|v| v[2]).fold(f64::NEG_INFINITY, f64::max)
     }
 
+    /// The volume the mesh encloses, mm³: positive when its triangles face
+    /// out, negative when they face in.
+    ///
+    /// ```
+    /// use tracery_core::mesh::Mesh;
+    /// let tetra = Mesh {
+    ///     vertices: vec![[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]],
+    ///     triangles: vec![[0, 2, 1], [0, 1, 3], [1, 2, 3], [0, 3, 2]],
+    /// };
+    /// assert!((tetra.signed_volume() - 1.0 / 6.0).abs() < 1e-12);
+    /// ```
+    pub fn signed_volume(&self) -> f64 {
+        let at = |i: u32| glam::DVec3::from_array(self.vertices[i as usize]);
+        self.triangles.iter().map(|t| at(t[0]).dot(at(t[1]).cross(at(t[2]))) / 6.0).sum()
+    }
+
+    /// Turns every triangle over if the mesh faces in: a map that mirrors
+    /// (a sheet bent onto a surface the other way round) leaves it so.
+    pub fn orient_outward(&mut self) {
+        if self.signed_volume() < 0.0 {
+            for t in &mut self.triangles {
+                t.swap(1, 2);
+            }
+        }
+    }
+
     /// Appends `other`'s vertices and triangles (the meshes stay separate shells).
     pub fn append(&mut self, other: &Mesh) {
         let base = self.vertices.len() as u32;

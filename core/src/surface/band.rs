@@ -108,7 +108,8 @@ pub fn lay_band(sheet_mm: &Region, sheet: Sheet, band: &BandOnSurface, thickness
     // Each vertex is mapped once, and each edge judged once: splitting goes
     // round after round over every edge, and a ray cast is the dear part.
     let mapped: RefCell<HashMap<[u64; 3], DVec3>> = RefCell::new(HashMap::new());
-    let judged: RefCell<HashMap<([u64; 3], [u64; 3]), bool>> = RefCell::new(HashMap::new());
+    type Edge = ([u64; 3], [u64; 3]);
+    let judged: RefCell<HashMap<Edge, bool>> = RefCell::new(HashMap::new());
     let key = |v: [f64; 3]| v.map(f64::to_bits);
     let map = |v: [f64; 3]| {
         if let Some(p) = mapped.borrow().get(&key(v)) {
@@ -151,18 +152,6 @@ pub fn lay_band(sheet_mm: &Region, sheet: Sheet, band: &BandOnSurface, thickness
     if merged > 0 && welded.sanity_check().is_err() {
         return Err(MeshError::Collapsed(merged));
     }
-    let volume: f64 = mesh
-        .triangles
-        .iter()
-        .map(|t| {
-            let [a, b, c] = t.map(|i| DVec3::from_array(mesh.vertices[i as usize]));
-            a.dot(b.cross(c))
-        })
-        .sum();
-    if volume < 0.0 {
-        for t in &mut mesh.triangles {
-            t.swap(1, 2);
-        }
-    }
+    mesh.orient_outward();
     Ok(mesh)
 }

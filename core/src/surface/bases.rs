@@ -163,17 +163,6 @@ fn revolve_loop(profile: &[DVec2]) -> Mesh {
 mod tests {
     use super::*;
 
-    /// Six times the enclosed volume (positive when the mesh faces out).
-    fn volume(mesh: &Mesh) -> f64 {
-        mesh.triangles
-            .iter()
-            .map(|t| {
-                let [a, b, c] = t.map(|i| glam::DVec3::from_array(mesh.vertices[i as usize]));
-                a.dot(b.cross(c)) / 6.0
-            })
-            .sum()
-    }
-
     #[test]
     fn every_base_is_closed_faces_out_and_has_the_volume_of_its_shape() {
         for name in BASE_NAMES {
@@ -181,13 +170,13 @@ mod tests {
             assert!(mesh.sanity_check().is_ok(), "{name}: {:?}", mesh.sanity_check());
             assert_eq!(mesh.shell_count(), 1, "{name}");
             assert!((10_000..40_000).contains(&mesh.triangles.len()), "{name}: {}", mesh.triangles.len());
-            assert!(volume(&mesh) > 0.0, "{name} faces in");
+            assert!(mesh.signed_volume() > 0.0, "{name} faces in");
         }
         // Inscribed polygons lose a little volume: 128 segments lose 0.04%,
         // the torus's 42-gon section 0.4%.
         let within = |got: f64, want: f64| (got - want).abs() / want < 5e-3;
-        assert!(within(volume(&builtin_base("cylinder").unwrap()), PI * 25.0 * 25.0 * 60.0));
-        assert!(within(volume(&builtin_base("sphere").unwrap()), 4.0 / 3.0 * PI * 30.0f64.powi(3)));
-        assert!(within(volume(&builtin_base("torus").unwrap()), 2.0 * PI * PI * 30.0 * 100.0));
+        assert!(within(builtin_base("cylinder").unwrap().signed_volume(), PI * 25.0 * 25.0 * 60.0));
+        assert!(within(builtin_base("sphere").unwrap().signed_volume(), 4.0 / 3.0 * PI * 30.0f64.powi(3)));
+        assert!(within(builtin_base("torus").unwrap().signed_volume(), 2.0 * PI * PI * 30.0 * 100.0));
     }
 }

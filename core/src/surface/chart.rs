@@ -344,7 +344,11 @@ fn mean_value_map(positions: &[DVec3], triangles: &[[u32; 3]], outer: &[u32]) ->
     let mut triplets = Vec::with_capacity(weights.len() + count);
     let mut diagonal = vec![0.0; count];
     let mut rhs = Mat::<f64>::zeros(count, 2);
-    for (&(i, j), &w) in &weights {
+    // In a fixed order, so that the factorization, and the curve with it,
+    // is the same on every run.
+    let mut weights: Vec<((u32, u32), f64)> = weights.into_iter().collect();
+    weights.sort_unstable_by_key(|&(edge, _)| edge);
+    for &((i, j), w) in &weights {
         let row = unknown[i as usize];
         if row == u32::MAX {
             continue;

@@ -236,11 +236,7 @@ pub fn wrap_rows(
     });
     let mut mesh =
         Mesh { vertices: fine.vertices.iter().map(|&v| on_surface(v).to_array()).collect(), triangles: fine.triangles };
-    if signed_volume(&mesh) < 0.0 {
-        for t in &mut mesh.triangles {
-            t.swap(1, 2);
-        }
-    }
+    mesh.orient_outward();
 
     let development_mm = develop(&sheet, shade, sheet_radius);
     let sin_half = (shade.bottom_radius_mm - shade.top_radius_mm).abs() / slant;
@@ -249,17 +245,6 @@ pub fn wrap_rows(
         .map(|(_, place)| 100.0 * 0.5 * place.band_mm * sin_half / shade.radius_at(place.centre_slant_mm))
         .fold(0.0, f64::max);
     Ok(Wrapped { mesh_mm: mesh, development_mm, topology, stretch_percent })
-}
-
-/// Six times the volume enclosed by `mesh` (positive when it faces out).
-fn signed_volume(mesh: &Mesh) -> f64 {
-    mesh.triangles
-        .iter()
-        .map(|t| {
-            let [a, b, c] = t.map(|i| DVec3::from_array(mesh.vertices[i as usize]));
-            a.dot(b.cross(c))
-        })
-        .sum()
 }
 
 /// The sheet laid flat: cut in two halves along the line `theta = 0, π`,
