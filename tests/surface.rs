@@ -125,7 +125,7 @@ fn a_mesh_file_is_read_and_points_off_it_are_snapped_and_reported() {
         &dir.join("out.json"),
     );
     assert!(json.contains("points off the surface were moved onto it (at most 3.00 mm"), "{json}");
-    assert_eq!(field(&json, "points_moved_mm"), "3.000,3.000", "{json}");
+    assert!(json.contains(r#""points_moved_mm": "3.000,3.000""#), "{json}");
     check_shell(&stl, &json, "cylinder", 2.0);
 }
 

@@ -53,7 +53,8 @@ pub enum MeshError {
 /// assert!(mesh.sanity_check().is_ok());
 /// ```
 pub fn extrude(region: &Region, thickness_mm: f64) -> Result<Mesh, MeshError> {
-    extrude_with(region, thickness_mm, None)
+    checked_thickness(thickness_mm)?;
+    with_repairs(region, |region, split_junctions| extrude_exactly(region, thickness_mm, split_junctions, None))
 }
 
 /// Like [`extrude`], with the top and bottom cut into well-shaped
@@ -72,19 +73,48 @@ pub fn extrude(region: &Region, thickness_mm: f64) -> Result<Mesh, MeshError> {
 /// assert!(mesh.triangles.len() > extrude(&region, 1.0).unwrap().triangles.len());
 /// ```
 pub fn extrude_fine(region: &Region, thickness_mm: f64, edge_mm: f64) -> Result<Mesh, MeshError> {
-    extrude_with(region, thickness_mm, Some(edge_mm))
+    checked_thickness(thickness_mm)?;
+    let sheet = triangulate_fine(region, edge_mm)?;
+    let top: Vec<[f64; 3]> = sheet.vertices.iter().map(|v| [v[0], v[1], thickness_mm]).collect();
+    Ok(super::thicken(&sheet, &sheet.vertices, &top))
 }
 
-fn extrude_with(region: &Region, thickness_mm: f64, fine: Option<f64>) -> Result<Mesh, MeshError> {
-    if !(thickness_mm.is_finite() && thickness_mm > 0.0) {
-        return Err(MeshError::Thickness(thickness_mm));
-    }
-    match extrude_exactly(region, thickness_mm, false, fine) {
+/// The inside of `region` cut into well-shaped triangles, as in
+/// [`extrude_fine`]: an open sheet in the plane `z = 0`, counter-clockwise
+/// seen from `+z`, whose boundary edges are the rings' edges (split where
+/// refinement split them). A solid bent onto a surface is made from it with
+/// [`super::thicken`].
+///
+/// ```
+/// use tracery_core::mesh::triangulate_fine;
+/// use tracery_core::DVec2;
+/// use tracery_core::geom::{Polygon, Region};
+/// let strip = vec![DVec2::new(0.0, 0.0), DVec2::new(40.0, 0.0), DVec2::new(40.0, 2.0), DVec2::new(0.0, 2.0)];
+/// let sheet = triangulate_fine(&Region::new(vec![Polygon { outer: strip, holes: vec![] }]), 1.0).unwrap();
+/// let area: f64 = sheet.triangles.iter().map(|t| {
+///     let [a, b, c] = t.map(|i| sheet.vertices[i as usize]);
+///     0.5 * ((b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]))
+/// }).sum();
+/// assert!((area - 80.0).abs() < 1e-9);
+/// ```
+pub fn triangulate_fine(region: &Region, edge_mm: f64) -> Result<Mesh, MeshError> {
+    with_repairs(region, |region, split_junctions| extrude_exactly(region, 0.0, split_junctions, Some(edge_mm)))
+}
+
+fn checked_thickness(thickness_mm: f64) -> Result<(), MeshError> {
+    if thickness_mm.is_finite() && thickness_mm > 0.0 { Ok(()) } else { Err(MeshError::Thickness(thickness_mm)) }
+}
+
+/// `make` on the region as given and, where its outline cannot be
+/// triangulated, on the region [`repaired`], then with its T-junctions
+/// split as well.
+fn with_repairs(region: &Region, make: impl Fn(&Region, bool) -> Result<Mesh, MeshError>) -> Result<Mesh, MeshError> {
+    match make(region, false) {
         Err(MeshError::Tessellation(_)) => {
             let repaired = repaired(region);
-            match extrude_exactly(&repaired, thickness_mm, false, fine) {
+            match make(&repaired, false) {
                 // Still a vertex on another ring's edge: make it a shared point.
-                Err(MeshError::Tessellation(_)) => extrude_exactly(&repaired, thickness_mm, true, fine),
+                Err(MeshError::Tessellation(_)) => make(&repaired, true),
                 result => result,
             }
         }
@@ -201,7 +231,7 @@ fn extrude_exactly(
         }
     }
     if let Some(edge_mm) = fine {
-        return Ok(refined(cdt, edge_mm, thickness_mm));
+        return Ok(refined(cdt, edge_mm));
     }
     // Flood from the outer face: crossing a ring edge toggles inside/outside.
     let mut inside: Vec<Option<bool>> = vec![None; cdt.all_faces().len()];
@@ -261,10 +291,9 @@ const MIN_REFINED_AREA_MM2: f64 = 1e-3;
 /// the outline.
 const MAX_REFINEMENT_VERTICES: usize = 400_000;
 
-/// The solid of a refined triangulation: inside faces (refinement's own
-/// flood from the outside) top and bottom, walls along every constraint
-/// edge (split ones included) from the side of its inside face.
-fn refined(mut cdt: ConstrainedDelaunayTriangulation<Point2<f64>>, edge_mm: f64, thickness_mm: f64) -> Mesh {
+/// The inside faces of a refined triangulation (refinement's own flood
+/// from the outside) as a sheet at `z = 0`.
+fn refined(mut cdt: ConstrainedDelaunayTriangulation<Point2<f64>>, edge_mm: f64) -> Mesh {
     use spade::{AngleLimit, RefinementParameters};
     let result = cdt.refine(
         RefinementParameters::<f64>::new()
@@ -278,35 +307,17 @@ fn refined(mut cdt: ConstrainedDelaunayTriangulation<Point2<f64>>, edge_mm: f64,
             .with_max_additional_vertices(MAX_REFINEMENT_VERTICES),
     );
     let excluded: std::collections::HashSet<_> = result.excluded_faces.into_iter().collect();
-    let count = cdt.num_vertices() as u32;
-    let mut mesh = Mesh { vertices: Vec::with_capacity(2 * count as usize), triangles: Vec::new() };
-    mesh.vertices.extend(cdt.vertices().map(|v| [v.position().x, v.position().y, 0.0]));
-    mesh.vertices.extend(cdt.vertices().map(|v| [v.position().x, v.position().y, thickness_mm]));
-    for face in cdt.inner_faces() {
-        if excluded.contains(&face.fix()) {
-            continue;
-        }
-        let [a, b, c] = face.vertices().map(|v| v.fix().index() as u32);
-        mesh.triangles.push([a + count, b + count, c + count]);
-        mesh.triangles.push([a, c, b]);
-    }
-    let inside = |face: Option<spade::handles::FixedFaceHandle<spade::handles::InnerTag>>| {
-        face.is_some_and(|f| !excluded.contains(&f))
+    let sheet = Mesh {
+        vertices: cdt.vertices().map(|v| [v.position().x, v.position().y, 0.0]).collect(),
+        // Spade's faces run counter-clockwise.
+        triangles: cdt
+            .inner_faces()
+            .filter(|face| !excluded.contains(&face.fix()))
+            .map(|face| face.vertices().map(|v| v.fix().index() as u32))
+            .collect(),
     };
-    for d in cdt.directed_edges() {
-        // A wall where the material is on the edge's left and not on its right.
-        if !d.is_constraint_edge()
-            || !inside(d.face().as_inner().map(|f| f.fix()))
-            || inside(d.rev().face().as_inner().map(|f| f.fix()))
-        {
-            continue;
-        }
-        let (a, b) = (d.from().fix().index() as u32, d.to().fix().index() as u32);
-        mesh.triangles.push([a, b, b + count]);
-        mesh.triangles.push([a, b + count, a + count]);
-    }
     // Vertices refinement placed outside the material are left out.
-    compact(mesh)
+    compact(sheet)
 }
 
 /// Drops vertices no triangle uses.

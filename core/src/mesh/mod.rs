@@ -1,6 +1,6 @@
 //! Triangle meshes: the [`Mesh`] type, extrusion of planar regions into
 //! watertight solids (with their repairs), refinement before a mesh is
-//! bent onto a surface, meshes read from STL and OBJ files, and the mesh
+//! bent onto a surface, solids from bent sheets, meshes read from STL and OBJ files, and the mesh
 //! invariants.
 
 mod extrude;
@@ -8,11 +8,13 @@ mod import;
 mod refine;
 mod sanity;
 mod t_junctions;
+mod thicken;
 mod triangle_mesh;
 
-pub use extrude::{MeshError, extrude, extrude_fine};
+pub use extrude::{MeshError, extrude, extrude_fine, triangulate_fine};
 pub use import::{ImportError, MAX_IMPORTED_TRIANGLES, read_mesh_file, read_obj, read_stl};
 pub use refine::split_edges;
 pub use sanity::MeshDefect;
 pub use t_junctions::split_t_junctions;
+pub use thicken::thicken;
 pub use triangle_mesh::Mesh;

@@ -2,7 +2,7 @@
 //! (a flat sheet wrapped onto a curved surface) bends it smoothly instead of
 //! cutting chords through the surface.
 
-use std::collections::HashMap;
+use std::collections::{HashMap, HashSet};
 
 use super::Mesh;
 
@@ -15,6 +15,9 @@ const MAX_ROUNDS: usize = 24;
 /// vertex positions, so the caller can judge it where the mesh will end up
 /// (how far a wrapped edge strays from its chord) while the midpoints are
 /// taken where it is now.
+///
+/// Each edge is judged once: one found fine is not asked about again in
+/// later rounds (the caller's test may be dear, such as a ray cast).
 ///
 /// An edge is split in every triangle that holds it at the same new vertex,
 /// so a closed, manifold mesh stays closed and manifold, with the same
@@ -34,17 +37,20 @@ const MAX_ROUNDS: usize = 24;
 /// ```
 pub fn split_edges(mesh: &Mesh, too_coarse: impl Fn([f64; 3], [f64; 3]) -> bool) -> Mesh {
     let mut out = mesh.clone();
+    let mut fine_enough: HashSet<(u32, u32)> = HashSet::new();
     for _ in 0..MAX_ROUNDS {
         // The new vertex of every edge that is too long, by its ends in order.
         let mut midpoints: HashMap<(u32, u32), u32> = HashMap::new();
         for t in &out.triangles {
             for k in 0..3 {
                 let (a, b) = (t[k].min(t[(k + 1) % 3]), t[k].max(t[(k + 1) % 3]));
-                if midpoints.contains_key(&(a, b)) {
+                if midpoints.contains_key(&(a, b)) || fine_enough.contains(&(a, b)) {
                     continue;
                 }
                 let (pa, pb) = (out.vertices[a as usize], out.vertices[b as usize]);
-                if too_coarse(pa, pb) {
+                if !too_coarse(pa, pb) {
+                    fine_enough.insert((a, b));
+                } else {
                     let middle = [0.5 * (pa[0] + pb[0]), 0.5 * (pa[1] + pb[1]), 0.5 * (pa[2] + pb[2])];
                     out.vertices.push(middle);
                     midpoints.insert((a, b), out.vertices.len() as u32 - 1);

@@ -6,13 +6,13 @@
 //! offset `v` across, to the left); for a closed one, made along a
 //! counter-clockwise circle as long as the curve (`u` is the angle times
 //! the radius, `v` the distance in from the circle), so that its loop
-//! closes on the sheet as on the surface. The sheet is extruded there
-//! (watertight by construction), its edges split until they follow the
-//! surface within [`super::CHORD_TOLERANCE_MM`], and each vertex mapped:
-//! `p(u) + v·b(u)` from the curve's smooth frames, moved onto the surface
-//! along the frame's normal (the paper stops at `p + v·b`, a flat ribbon
-//! tangent to the surface along the curve only), then raised by its height
-//! along the smooth normal there.
+//! closes on the sheet as on the surface. The sheet is triangulated there,
+//! its edges split until they follow the surface within
+//! [`super::CHORD_TOLERANCE_MM`], and each vertex mapped: `p(u) + v·b(u)`
+//! from the curve's smooth frames, moved onto the surface along the frame's
+//! normal (the paper stops at `p + v·b`, a flat ribbon tangent to the
+//! surface along the curve only); the solid stands on those points, raised
+//! along the smooth normal there (watertight by construction).
 
 use std::cell::RefCell;
 use std::collections::HashMap;
@@ -22,7 +22,7 @@ use glam::{DVec2, DVec3};
 
 use super::{CHORD_TOLERANCE_MM, Frames, SurfaceCurve, SurfaceMesh};
 use crate::geom::Region;
-use crate::mesh::{Mesh, MeshError, extrude_fine, split_edges};
+use crate::mesh::{Mesh, MeshError, split_edges, thicken, triangulate_fine};
 
 /// About the longest edge of the sheet's triangulation, mm: on a radius of
 /// 10 mm an edge this long stands 0.01 mm off the surface at its middle.
@@ -74,10 +74,17 @@ pub struct BandOnSurface<'a> {
 impl BandOnSurface<'_> {
     /// The surface point for band point `(u, v)` raised by `height_mm`.
     pub fn surface_from_band(&self, band: DVec2, height_mm: f64) -> DVec3 {
+        let (on, up) = self.foot_and_up(band);
+        on + up * height_mm
+    }
+
+    /// Where band point `(u, v)` meets the surface, and the direction its
+    /// height is raised along there (unit).
+    fn foot_and_up(&self, band: DVec2) -> (DVec3, DVec3) {
         let (p, across, normal) = self.frames.at(self.curve, band.x);
         let flat = p + across * band.y;
         if !self.conform {
-            return flat + normal * height_mm;
+            return (flat, normal);
         }
         // Down the frame's normal, not to the closest point: on a faceted
         // mesh every point in a vertex's normal cone has that vertex as its
@@ -95,63 +102,82 @@ impl BandOnSurface<'_> {
         if up.dot(normal) < 0.0 {
             up = normal;
         }
-        on.position_mm + up * height_mm
+        (on.position_mm, up)
     }
 }
 
 /// `sheet_mm` (see [`Sheet`]) made `thickness_mm` thick on the surface,
 /// facing out.
+///
+/// The sheet is cut into well-shaped triangles, its edges split until both
+/// the bottom (on the surface) and the top follow it within
+/// [`CHORD_TOLERANCE_MM`], and only then made solid ([`thicken`]): each
+/// vertex's bottom and top are joined straight along the normal, so the
+/// walls need no splitting of their own.
 pub fn lay_band(sheet_mm: &Region, sheet: Sheet, band: &BandOnSurface, thickness_mm: f64) -> Result<Mesh, MeshError> {
+    if !(thickness_mm.is_finite() && thickness_mm > 0.0) {
+        return Err(MeshError::Thickness(thickness_mm));
+    }
     // Well-shaped triangles first: a long sliver split until it follows
     // the surface would crumble into thousands.
-    let flat = extrude_fine(sheet_mm, thickness_mm, FINE_EDGE_MM)?;
-    // Each vertex is mapped once, and each edge judged once: splitting goes
-    // round after round over every edge, and a ray cast is the dear part.
-    let mapped: RefCell<HashMap<[u64; 3], DVec3>> = RefCell::new(HashMap::new());
-    type Edge = ([u64; 3], [u64; 3]);
-    let judged: RefCell<HashMap<Edge, bool>> = RefCell::new(HashMap::new());
-    let key = |v: [f64; 3]| v.map(f64::to_bits);
-    let map = |v: [f64; 3]| {
-        if let Some(p) = mapped.borrow().get(&key(v)) {
-            return *p;
+    let flat = triangulate_fine(sheet_mm, FINE_EDGE_MM)?;
+    // Each sheet point is placed once (a ray cast is the dear part): an
+    // edge's middle, judged in one round, is a vertex in the next.
+    let placed: RefCell<HashMap<[u64; 2], (DVec3, DVec3)>> = RefCell::new(HashMap::new());
+    let place = |v: [f64; 3]| {
+        let key = [v[0].to_bits(), v[1].to_bits()];
+        if let Some(&found) = placed.borrow().get(&key) {
+            return found;
         }
-        let p = band.surface_from_band(sheet.band_from_sheet(DVec2::new(v[0], v[1])), v[2]);
-        mapped.borrow_mut().insert(key(v), p);
-        p
+        let found = band.foot_and_up(sheet.band_from_sheet(DVec2::new(v[0], v[1])));
+        placed.borrow_mut().insert(key, found);
+        found
     };
     let fine = split_edges(&flat, |a, b| {
-        if let Some(&verdict) = judged.borrow().get(&(key(a), key(b))) {
-            return verdict;
+        if (a[0] - b[0]).hypot(a[1] - b[1]) <= SHORTEST_SPLIT_MM {
+            return false;
         }
-        let middle = map([0.5 * (a[0] + b[0]), 0.5 * (a[1] + b[1]), 0.5 * (a[2] + b[2])]);
-        let long_enough = (0..3).map(|k| (a[k] - b[k]).powi(2)).sum::<f64>() > SHORTEST_SPLIT_MM.powi(2);
-        let verdict = long_enough && middle.distance(0.5 * (map(a) + map(b))) > CHORD_TOLERANCE_MM;
-        judged.borrow_mut().insert((key(a), key(b)), verdict);
-        verdict
+        let ((pa, ua), (pb, ub)) = (place(a), place(b));
+        let (pm, um) = place([0.5 * (a[0] + b[0]), 0.5 * (a[1] + b[1]), 0.0]);
+        let strays = |h: f64| (pm + um * h).distance(0.5 * (pa + ua * h + pb + ub * h)) > CHORD_TOLERANCE_MM;
+        strays(0.0) || strays(thickness_mm)
     });
-    let mut mesh =
-        Mesh { vertices: fine.vertices.iter().map(|&v| map(v).to_array()).collect(), triangles: fine.triangles };
-    // Points an f32 step apart on the sheet can land on one point of the
-    // file once bent, which would leave it open: refused rather than written.
-    let mut ids: HashMap<[u32; 3], u32> = HashMap::new();
-    let welded = Mesh {
-        vertices: Vec::new(),
-        triangles: mesh
-            .triangles
-            .iter()
-            .map(|t| {
-                t.map(|i| {
-                    let next = ids.len() as u32;
-                    *ids.entry(mesh.vertices[i as usize].map(|c| (c as f32).to_bits())).or_insert(next)
-                })
-            })
-            .collect(),
-    };
-    let merged = mesh.vertices.len() - ids.len();
-    let welded = Mesh { vertices: vec![[0.0; 3]; ids.len()], ..welded };
-    if merged > 0 && welded.sanity_check().is_err() {
+    let (bottom, top): (Vec<[f64; 3]>, Vec<[f64; 3]>) = fine
+        .vertices
+        .iter()
+        .map(|&v| {
+            let (on, up) = place(v);
+            (on.to_array(), (on + up * thickness_mm).to_array())
+        })
+        .unzip();
+    let mut mesh = thicken(&fine, &bottom, &top);
+    if let Some(merged) = falls_together_in_f32(&mesh) {
         return Err(MeshError::Collapsed(merged));
     }
     mesh.orient_outward();
     Ok(mesh)
+}
+
+/// How many vertices fall onto another once written as `f32`, when that
+/// leaves the mesh open or non-manifold: a guard, since a file that is
+/// watertight in `f64` and open in `f32` must never be written.
+fn falls_together_in_f32(mesh: &Mesh) -> Option<usize> {
+    let mut ids: HashMap<[u32; 3], u32> = HashMap::new();
+    let index: Vec<u32> = mesh
+        .vertices
+        .iter()
+        .map(|v| {
+            let next = ids.len() as u32;
+            *ids.entry(v.map(|c| (c as f32).to_bits())).or_insert(next)
+        })
+        .collect();
+    let merged = mesh.vertices.len() - ids.len();
+    if merged == 0 {
+        return None;
+    }
+    let welded = Mesh {
+        vertices: vec![[0.0; 3]; ids.len()],
+        triangles: mesh.triangles.iter().map(|t| t.map(|i| index[i as usize])).collect(),
+    };
+    welded.sanity_check().is_err().then_some(merged)
 }

@@ -154,6 +154,11 @@ impl Chart {
         Ok(Chart { vertex_of, local_of, uv, triangles, face_of, chart_triangle_of, grid })
     }
 
+    /// Where the centres of the filled holes lie on the disk.
+    pub fn hole_centres(&self) -> Vec<DVec2> {
+        self.vertex_of.iter().zip(&self.uv).filter(|(v, _)| v.is_none()).map(|(_, &uv)| uv).collect()
+    }
+
     /// Number of chart triangles (filled holes included).
     pub fn triangle_count(&self) -> usize {
         self.triangles.len()

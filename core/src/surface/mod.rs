@@ -6,7 +6,7 @@
 //! - Curves drawn on a base model ([`builtin_base`] or a mesh read with
 //!   [`crate::mesh::read_mesh_file`]): checked ([`SurfaceMesh`]), the part
 //!   around the picked points laid flat ([`Chart`]), a spline traced on it
-//!   ([`trace`]), smooth frames along it ([`Frames`]), all in [`draw_on`];
+//!   ([`trace`], drawn in a [`SplineDomain`]), smooth frames along it ([`Frames`]), all in [`draw_on`];
 //!   then a band made along it laid on the surface ([`lay_band`]).
 
 mod band;
@@ -14,6 +14,7 @@ mod bases;
 mod chart;
 mod drawn;
 mod frames;
+mod ring_domain;
 mod shade;
 mod sheet;
 mod surface_mesh;
@@ -24,6 +25,7 @@ pub use bases::{BASE_NAMES, builtin_base};
 pub use chart::{Chart, ChartError, MIN_POINTS};
 pub use drawn::{Drawn, DrawnError, SNAP_REPORT_MM, SurfaceSettings, draw_on};
 pub use frames::Frames;
+pub use ring_domain::SplineDomain;
 pub use shade::{MAX_SHADE_MM, Shade, ShadeError};
 pub use sheet::{
     CHORD_TOLERANCE_MM, RowPlace, SHEET_STEP_MM, SHEET_TOLERANCE_MM, ShadeSettings, WrapError, Wrapped, wrap_rows,

@@ -214,10 +214,9 @@ impl SurfaceMesh {
         // Not solid: a ray starting inside the model meets its surface too.
         let hit = self.bvh.cast_local_ray_and_get_normal(&ray, f64::MAX, false)?;
         let position = origin_mm + direction.normalize() * hit.time_of_impact;
-        let face = match hit.feature {
-            parry3d_f64::shape::FeatureId::Face(f) => f % self.mesh.triangles.len() as u32,
-            _ => self.closest_point(position.to_array()).face,
-        };
+        // The triangle is the hit's sub-shape; its `feature` names a face,
+        // edge or vertex of that one triangle.
+        let face = hit.subshape;
         Some(SurfacePoint { face, barycentric: self.barycentric(face, position), position_mm: position })
     }
 

@@ -1,5 +1,6 @@
 //! A curve on a surface through picked points: a centripetal Catmull-Rom
-//! spline through them on the chart's disk, sampled finely enough that no
+//! spline through them on the chart's disk (or about a hole of it, see
+//! [`SplineDomain`]), sampled finely enough that no
 //! step is longer than asked on the surface, plus a point wherever it
 //! crosses a mesh edge, all mapped back through their triangles. So every
 //! segment of the curve lies inside one triangle of the mesh: on the
@@ -7,7 +8,7 @@
 
 use glam::{DVec2, DVec3};
 
-use super::{Chart, SurfaceMesh, SurfacePoint};
+use super::{Chart, SplineDomain, SurfaceMesh, SurfacePoint};
 
 /// Why a curve could not be traced.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
@@ -79,17 +80,20 @@ pub fn trace(
         .enumerate()
         .map(|(k, p)| chart.to_disk(p).ok_or(TraceError::LeavesChart { from: k + 1, to: k + 1 }))
         .collect::<Result<_, _>>()?;
+    let domain = SplineDomain::for_curve(chart, &disk, closed);
+    let controls = domain.controls(&disk);
     // Ends of an open curve are extended by reflection, so the spline
-    // starts and stops heading at its neighbour.
+    // starts and stops heading at its neighbour; a closed one's controls
+    // repeat, a period further on each time round.
     let control = |i: isize| -> DVec2 {
         if closed {
-            disk[i.rem_euclid(n as isize) as usize]
+            controls[i.rem_euclid(n as isize) as usize] + domain.period() * i.div_euclid(n as isize) as f64
         } else if i < 0 {
-            2.0 * disk[0] - disk[1.min(n - 1)]
+            2.0 * controls[0] - controls[1.min(n - 1)]
         } else if i as usize >= n {
-            2.0 * disk[n - 1] - disk[n.saturating_sub(2)]
+            2.0 * controls[n - 1] - controls[n.saturating_sub(2)]
         } else {
-            disk[i as usize]
+            controls[i as usize]
         }
     };
     let mut curve = SurfaceCurve { closed, ..SurfaceCurve::default() };
@@ -105,7 +109,7 @@ pub fn trace(
             if k == 0 && span > 0 {
                 continue;
             }
-            let p = segment.at(k as f64 / samples as f64);
+            let p = domain.to_disk(segment.at(k as f64 / samples as f64));
             match at {
                 None => {
                     let (t, _) = chart.locate(p).ok_or(fail_leave.clone())?;
