@@ -100,12 +100,12 @@ impl Frames {
         let j = (k + 1) % n;
         let span = if j == 0 { self.length_mm - self.arc_mm[k] } else { self.arc_mm[j] - self.arc_mm[k] };
         let s = if span > 0.0 { ((u - self.arc_mm[k]) / span).clamp(0.0, 1.0) } else { 0.0 };
-        let blend = |a: DVec3, b: DVec3| (a * (1.0 - s) + b * s).normalize_or_zero();
-        (
-            points[k].lerp(points[j], s),
-            blend(self.binormals[k], self.binormals[j]),
-            blend(self.normals[k], self.normals[j]),
-        )
+        let blend = |a: DVec3, b: DVec3| a * (1.0 - s) + b * s;
+        let normal = blend(self.normals[k], self.normals[j]).normalize_or_zero();
+        // Blended separately, the two would lean together between points.
+        let across = blend(self.binormals[k], self.binormals[j]);
+        let across = (across - normal * across.dot(normal)).normalize_or_zero();
+        (points[k].lerp(points[j], s), across, normal)
     }
 
     /// The largest turn of the across direction per millimetre along the
