@@ -17,9 +17,8 @@ fn bench_surface(c: &mut Criterion) {
 
     // The sphere with its long edges halved: about 64k triangles, of which
     // the chart round its equator takes most.
-    let fine = split_edges(&builtin_base("sphere").unwrap(), |a, b| {
-        (0..3).map(|k| (a[k] - b[k]).powi(2)).sum::<f64>() > 1.0
-    });
+    let fine =
+        split_edges(&builtin_base("sphere").unwrap(), |a, b| (0..3).map(|k| (a[k] - b[k]).powi(2)).sum::<f64>() > 1.0);
     let sphere = SurfaceMesh::new(fine).unwrap();
     let ring = SurfaceSettings::parse_points("30,0,30;0,30,30;-30,0,30;0,-30,30").unwrap();
     let picked: Vec<_> = ring.iter().map(|&p| sphere.closest_point(p)).collect();

@@ -21,9 +21,10 @@ pub enum MeshError {
     /// Thickness is not a positive number.
     #[error("the thickness {0} mm must be a positive number")]
     Thickness(f64),
-    /// Distinct points of the solid fall on one point once written as `f32`.
+    /// The solid laid on a surface would be open or non-manifold once
+    /// written as `f32`.
     #[error(
-        "{0} point(s) of the pattern fall together once laid on the surface, which would leave the solid open; try another seed or a narrower band"
+        "the band laid on the surface would not be a closed solid ({0} of its points fall together in the file); try another seed or a narrower band"
     )]
     Collapsed(usize),
     /// The tessellator failed on the pattern's outline.

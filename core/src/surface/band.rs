@@ -150,6 +150,7 @@ pub fn lay_band(sheet_mm: &Region, sheet: Sheet, band: &BandOnSurface, thickness
             (on.to_array(), (on + up * thickness_mm).to_array())
         })
         .unzip();
+    let (fine, bottom, top) = weld_tiny_edges(fine, bottom, top);
     let mut mesh = thicken(&fine, &bottom, &top);
     if let Some(merged) = falls_together_in_f32(&mesh) {
         return Err(MeshError::Collapsed(merged));
@@ -158,8 +159,66 @@ pub fn lay_band(sheet_mm: &Region, sheet: Sheet, band: &BandOnSurface, thickness
     Ok(mesh)
 }
 
-/// How many vertices fall onto another once written as `f32`, when that
-/// leaves the mesh open or non-manifold: a guard, since a file that is
+/// Placed points closer than this are one, mm: far below a printer's
+/// resolution, and above the `f32` step of an STL at half a metre.
+const WELD_MM: f64 = 1e-4;
+
+/// The sheet with every edge whose ends are placed less than [`WELD_MM`]
+/// apart (at the bottom or at the top) collapsed, and the triangles that
+/// collapse with it dropped. Refinement and splitting can leave vertices a
+/// fraction of a micrometre apart, which an STL's `f32` would merge
+/// anyway, leaving the solid open there.
+fn weld_tiny_edges(sheet: Mesh, bottom: Vec<[f64; 3]>, top: Vec<[f64; 3]>) -> (Mesh, Vec<[f64; 3]>, Vec<[f64; 3]>) {
+    let apart = |a: usize, b: usize| {
+        let d = |p: &[[f64; 3]]| DVec3::from_array(p[a]).distance(DVec3::from_array(p[b]));
+        d(&bottom).min(d(&top))
+    };
+    let mut parent: Vec<u32> = (0..sheet.vertices.len() as u32).collect();
+    fn root(parent: &mut [u32], mut v: u32) -> u32 {
+        while parent[v as usize] != v {
+            parent[v as usize] = parent[parent[v as usize] as usize];
+            v = parent[v as usize];
+        }
+        v
+    }
+    let mut welded = false;
+    for t in &sheet.triangles {
+        for k in 0..3 {
+            let (a, b) = (t[k], t[(k + 1) % 3]);
+            if apart(a as usize, b as usize) < WELD_MM {
+                let (ra, rb) = (root(&mut parent, a), root(&mut parent, b));
+                parent[ra.max(rb) as usize] = ra.min(rb);
+                welded |= ra != rb;
+            }
+        }
+    }
+    if !welded {
+        return (sheet, bottom, top);
+    }
+    let mut index = vec![u32::MAX; sheet.vertices.len()];
+    let mut out = Mesh::default();
+    let (mut out_bottom, mut out_top) = (Vec::new(), Vec::new());
+    for t in &sheet.triangles {
+        let t = t.map(|v| root(&mut parent, v));
+        if t[0] == t[1] || t[1] == t[2] || t[2] == t[0] {
+            continue;
+        }
+        out.triangles.push(t.map(|v| {
+            if index[v as usize] == u32::MAX {
+                index[v as usize] = out.vertices.len() as u32;
+                out.vertices.push(sheet.vertices[v as usize]);
+                out_bottom.push(bottom[v as usize]);
+                out_top.push(top[v as usize]);
+            }
+            index[v as usize]
+        }));
+    }
+    (out, out_bottom, out_top)
+}
+
+/// Whether the mesh, once its vertices are written as `f32` (and those
+/// that fall together merged, as a reader does), is no longer closed and
+/// manifold; with how many vertices merged. A guard: a file that is
 /// watertight in `f64` and open in `f32` must never be written.
 fn falls_together_in_f32(mesh: &Mesh) -> Option<usize> {
     let mut ids: HashMap<[u32; 3], u32> = HashMap::new();
@@ -172,9 +231,6 @@ fn falls_together_in_f32(mesh: &Mesh) -> Option<usize> {
         })
         .collect();
     let merged = mesh.vertices.len() - ids.len();
-    if merged == 0 {
-        return None;
-    }
     let welded = Mesh {
         vertices: vec![[0.0; 3]; ids.len()],
         triangles: mesh.triangles.iter().map(|t| t.map(|i| index[i as usize])).collect(),
