@@ -9,15 +9,8 @@ mod cli;
 mod stl;
 #[path = "common/threemf.rs"]
 mod threemf;
-use cli::{field, tempdir, tracery};
+use cli::{field, report_of, tempdir, tracery};
 use stl::{check_stl, stl_vertices};
-
-/// Runs `tracery shade ARGS --report REPORT`, which must succeed, and returns the report.
-fn shade_report(args: &[&str], report: &std::path::Path) -> String {
-    let out = tracery().arg("shade").args(args).arg("--report").arg(report).output().unwrap();
-    assert!(out.status.success(), "{args:?}: {}", String::from_utf8_lossy(&out.stderr));
-    std::fs::read_to_string(report).unwrap()
-}
 
 #[test]
 fn a_cylinder_shade_is_one_closed_body_on_the_surface() {
@@ -25,7 +18,8 @@ fn a_cylinder_shade_is_one_closed_body_on_the_surface() {
     let (stl, three_mf, svg) = (dir.join("s.stl"), dir.join("s.3mf"), dir.join("s.svg"));
     let path = |p: &std::path::Path| p.display().to_string();
     let (radius, height, thickness) = (30.0, 40.0, 1.5);
-    let json = shade_report(
+    let json = report_of(
+        "shade",
         &[
             "--exemplar",
             "chain",
@@ -74,7 +68,8 @@ fn a_cone_shade_with_rows_that_must_be_laid_closer_is_one_body() {
     // into pieces, so the shade lays them closer until they hold.
     let dir = tempdir("shade-cone");
     let stl = dir.join("c.stl");
-    let json = shade_report(
+    let json = report_of(
+        "shade",
         &["--exemplar", "vine", "--cone", "45,30,40", "--stl", &stl.display().to_string()],
         &dir.join("c.json"),
     );

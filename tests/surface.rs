@@ -9,16 +9,9 @@
 mod cli;
 #[path = "common/stl.rs"]
 mod stl;
-use cli::{field, tempdir, tracery};
+use cli::{field, report_of, tempdir, tracery};
 use stl::{check_stl, stl_vertices};
 use tracery_core::surface::{SurfaceMesh, builtin_base};
-
-/// Runs `tracery surface ARGS --report REPORT`, which must succeed, and returns the report.
-fn surface_report(args: &[&str], report: &std::path::Path) -> String {
-    let out = tracery().arg("surface").args(args).arg("--report").arg(report).output().unwrap();
-    assert!(out.status.success(), "{args:?}: {}", String::from_utf8_lossy(&out.stderr));
-    std::fs::read_to_string(report).unwrap()
-}
 
 /// Checks the shell at `stl` against the report and the base it lies on.
 fn check_shell(stl: &std::path::Path, json: &str, base: &str, thickness_mm: f64) {
@@ -45,7 +38,8 @@ fn a_ring_around_the_vase_is_one_closed_shell_on_it() {
     let dir = tempdir("surface-vase");
     let (stl, three_mf) = (dir.join("v.stl"), dir.join("v.3mf"));
     let path = |p: &std::path::Path| p.display().to_string();
-    let json = surface_report(
+    let json = report_of(
+        "surface",
         &[
             "--exemplar",
             "chain",
@@ -79,7 +73,8 @@ fn a_ring_around_the_vase_is_one_closed_shell_on_it() {
 fn an_open_curve_keeps_its_targets_on_the_cone() {
     let dir = tempdir("surface-open");
     let stl = dir.join("cone.stl");
-    let json = surface_report(
+    let json = report_of(
+        "surface",
         &[
             "--exemplar",
             "chain",
@@ -109,7 +104,8 @@ fn a_mesh_file_is_read_and_points_off_it_are_snapped_and_reported() {
     tracery_core::export::write_stl(&builtin_base("cylinder").unwrap(), &mut bytes).unwrap();
     std::fs::write(&base, bytes).unwrap();
     let stl = dir.join("out.stl");
-    let json = surface_report(
+    let json = report_of(
+        "surface",
         &[
             "--exemplar",
             "chain",

@@ -24,3 +24,11 @@ pub fn field(json: &str, name: &str) -> String {
     let start = json.find(&key).unwrap_or_else(|| panic!("no {name} in report")) + key.len();
     json[start..].split([',', '\n']).next().unwrap().trim().trim_matches('"').to_string()
 }
+
+/// Runs `tracery SUBCOMMAND ARGS --report REPORT`, which must succeed, and
+/// returns the report.
+pub fn report_of(subcommand: &str, args: &[&str], report: &std::path::Path) -> String {
+    let out = tracery().arg(subcommand).args(args).arg("--report").arg(report).output().unwrap();
+    assert!(out.status.success(), "{subcommand} {args:?}: {}", String::from_utf8_lossy(&out.stderr));
+    std::fs::read_to_string(report).unwrap()
+}
