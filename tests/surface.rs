@@ -126,6 +126,47 @@ fn a_mesh_file_is_read_and_points_off_it_are_snapped_and_reported() {
 }
 
 #[test]
+fn an_embossed_ring_and_the_vase_are_one_watertight_body() {
+    let dir = tempdir("surface-emboss");
+    let stl = dir.join("e.stl");
+    let args = ["--exemplar", "chain", "--mesh", "vase", "--points", "30,0,25;0,30,25;-30,0,25;0,-30,25", "--closed"];
+    let path = stl.display().to_string();
+    let json = report_of(
+        "surface",
+        &[&args[..], &["--band", "8", "--mode", "emboss", "--stl", &path]].concat(),
+        &dir.join("e.json"),
+    );
+    let check = check_stl(&stl);
+    assert_eq!((check.open_edges, check.misoriented_edges), (0, 0), "{check:?}");
+    assert_eq!(check.shells, 1, "{check:?}");
+    // The band is welded to the vase along all of its underside: its holes
+    // are pockets and its ring goes round nothing, so the body is a ball.
+    assert_eq!(check.euler, 2, "{check:?} {json}");
+    assert!(field(&json, "holes").parse::<usize>().unwrap() > 0, "{json}");
+    // Every vertex is on the vase, or on the band within its thickness above it.
+    let vase = SurfaceMesh::new(builtin_base("vase").unwrap()).unwrap();
+    let volume = |m: &tracery_core::mesh::Mesh| m.signed_volume();
+    let points = stl_vertices(&stl);
+    let mut above = 0;
+    for v in &points {
+        let on = vase.closest_point(*v).position_mm;
+        let off = ((on.x - v[0]).powi(2) + (on.y - v[1]).powi(2) + (on.z - v[2]).powi(2)).sqrt();
+        assert!(off <= 2.0 + 0.02, "vertex {v:?} is {off} mm from the vase");
+        above += usize::from(off > 1.0);
+    }
+    assert!(above > 1000, "only {above} vertices stand out of the vase");
+    // The same band as a pattern alone: the embossed body holds the vase and
+    // most of the band (all but what sank into the vase).
+    let alone = dir.join("p.stl");
+    let alone_path = alone.display().to_string();
+    report_of("surface", &[&args[..], &["--band", "8", "--stl", &alone_path]].concat(), &dir.join("p.json"));
+    let read = |p: &std::path::Path| tracery_core::mesh::read_stl(&std::fs::read(p).unwrap(), "test").unwrap();
+    let (body, band) = (volume(&read(&stl)), volume(&read(&alone)));
+    let base = volume(vase.mesh());
+    assert!(body > base + 0.8 * band && body < base + band, "body {body:.0} mm³, vase {base:.0}, band {band:.0}");
+}
+
+#[test]
 fn bad_surfaces_fail_with_one_line_and_no_file() {
     let dir = tempdir("surface-bad");
     let stl = dir.join("bad.stl");

@@ -3,14 +3,17 @@
 //! and manifold, with as many shells as the plan's components, and how long
 //! each took. Prints one line per run and a summary.
 //!
-//! `cargo run -p tracery-core --release --example surface_sweep [-- BAND_MM]`
+//! With `emboss`, each band is united with its base, and the body must be
+//! one shell.
+//!
+//! `cargo run -p tracery-core --release --example surface_sweep [-- BAND_MM [emboss]]`
 
 use std::time::Instant;
 
 use tracery_core::control::Control;
 use tracery_core::export::write_stl;
 use tracery_core::mesh::read_stl;
-use tracery_core::surface::{SurfaceMesh, SurfaceSettings, builtin_base};
+use tracery_core::surface::{SurfaceMesh, SurfaceOutput, SurfaceSettings, builtin_base};
 use tracery_core::vector_brush::{BUILTIN_NAMES, Settings, builtin, make_on_surface};
 
 const CURVES: [(&str, &str, &str, bool); 12] = [
@@ -30,12 +33,16 @@ const CURVES: [(&str, &str, &str, bool); 12] = [
 
 fn main() {
     let band_mm: f64 = std::env::args().nth(1).and_then(|a| a.parse().ok()).unwrap_or(8.0);
+    let emboss = std::env::args().nth(2).as_deref() == Some("emboss");
     let (mut runs, mut sound, mut slowest_ms, mut most_triangles) = (0, 0, 0.0_f64, 0);
     for (base, kind, points, closed) in CURVES {
         let surface = SurfaceMesh::new(builtin_base(base).unwrap()).unwrap();
         let mut drawn = SurfaceSettings::default();
         drawn.points_mm = SurfaceSettings::parse_points(points).unwrap();
         drawn.closed = closed;
+        if emboss {
+            drawn.output = SurfaceOutput::Emboss;
+        }
         for name in BUILTIN_NAMES {
             let mut settings = Settings::default();
             settings.band_mm = band_mm;
@@ -55,7 +62,7 @@ fn main() {
                     let shells = back.shell_count();
                     match back.sanity_check() {
                         Err(defect) => format!("OPEN in f32: {defect}"),
-                        Ok(()) if shells != product.topology.components => {
+                        Ok(()) if shells != if emboss { 1 } else { product.topology.components } => {
                             format!("{shells} shells for {} components", product.topology.components)
                         }
                         Ok(()) => {

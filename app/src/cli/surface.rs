@@ -10,7 +10,7 @@ use clap::{Parser, ValueEnum};
 use tracery_core::control::Control;
 use tracery_core::mesh::{Mesh, read_mesh_file};
 use tracery_core::print::check_solid;
-use tracery_core::surface::{BASE_NAMES, SurfaceMesh, SurfaceSettings, builtin_base};
+use tracery_core::surface::{BASE_NAMES, SurfaceMesh, SurfaceOutput, SurfaceSettings, builtin_base};
 use tracery_core::vector_brush::make_on_surface;
 
 use super::output::{OutputArgs, write_outputs};
@@ -22,6 +22,8 @@ pub enum SurfaceMode {
     /// The pattern alone, a shell conforming to the surface.
     #[default]
     Pattern,
+    /// The pattern united with the model into one solid.
+    Emboss,
 }
 
 /// Flags of `tracery surface`.
@@ -59,6 +61,10 @@ impl SurfaceArgs {
         s.points_mm = SurfaceSettings::parse_points(&self.points)?;
         s.closed = self.closed;
         s.twist_deg = self.twist.unwrap_or(s.twist_deg);
+        s.output = match self.mode {
+            SurfaceMode::Pattern => SurfaceOutput::Pattern,
+            SurfaceMode::Emboss => SurfaceOutput::Emboss,
+        };
         s.validate()?;
         Ok(s)
     }

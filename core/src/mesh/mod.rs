@@ -1,8 +1,9 @@
 //! Triangle meshes: the [`Mesh`] type, extrusion of planar regions into
 //! watertight solids (with their repairs), refinement before a mesh is
-//! bent onto a surface, solids from bent sheets, meshes read from STL and OBJ files, and the mesh
+//! bent onto a surface, solids from bent sheets, booleans, meshes read from STL and OBJ files, and the mesh
 //! invariants.
 
+mod boolean;
 mod extrude;
 mod import;
 mod refine;
@@ -11,6 +12,7 @@ mod t_junctions;
 mod thicken;
 mod triangle_mesh;
 
+pub use boolean::{BooleanError, difference_solids, union_solids};
 pub use extrude::{MeshError, extrude, extrude_fine, triangulate_fine};
 pub use import::{ImportError, MAX_IMPORTED_TRIANGLES, read_mesh_file, read_obj, read_stl};
 pub use refine::split_edges;

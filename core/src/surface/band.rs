@@ -107,14 +107,21 @@ impl BandOnSurface<'_> {
 }
 
 /// `sheet_mm` (see [`Sheet`]) made `thickness_mm` thick on the surface,
-/// facing out.
+/// facing out, its underside `sink_mm` below the surface (0 for a band
+/// lying on it).
 ///
 /// The sheet is cut into well-shaped triangles, its edges split until both
 /// the bottom (on the surface) and the top follow it within
 /// [`CHORD_TOLERANCE_MM`], and only then made solid ([`thicken`]): each
 /// vertex's bottom and top are joined straight along the normal, so the
 /// walls need no splitting of their own.
-pub fn lay_band(sheet_mm: &Region, sheet: Sheet, band: &BandOnSurface, thickness_mm: f64) -> Result<Mesh, MeshError> {
+pub fn lay_band(
+    sheet_mm: &Region,
+    sheet: Sheet,
+    band: &BandOnSurface,
+    thickness_mm: f64,
+    sink_mm: f64,
+) -> Result<Mesh, MeshError> {
     if !(thickness_mm.is_finite() && thickness_mm > 0.0) {
         return Err(MeshError::Thickness(thickness_mm));
     }
@@ -140,14 +147,14 @@ pub fn lay_band(sheet_mm: &Region, sheet: Sheet, band: &BandOnSurface, thickness
         let ((pa, ua), (pb, ub)) = (place(a), place(b));
         let (pm, um) = place([0.5 * (a[0] + b[0]), 0.5 * (a[1] + b[1]), 0.0]);
         let strays = |h: f64| (pm + um * h).distance(0.5 * (pa + ua * h + pb + ub * h)) > CHORD_TOLERANCE_MM;
-        strays(0.0) || strays(thickness_mm)
+        strays(-sink_mm) || strays(thickness_mm)
     });
     let (bottom, top): (Vec<[f64; 3]>, Vec<[f64; 3]>) = fine
         .vertices
         .iter()
         .map(|&v| {
             let (on, up) = place(v);
-            (on.to_array(), (on + up * thickness_mm).to_array())
+            ((on - up * sink_mm).to_array(), (on + up * thickness_mm).to_array())
         })
         .unzip();
     let (fine, bottom, top) = weld_tiny_edges(fine, bottom, top);

@@ -29,11 +29,35 @@ pub struct SurfaceSettings {
     pub twist_deg: f64,
     /// Longest step of the traced curve between mesh edges, mm.
     pub step_mm: f64,
+    /// What is made: the pattern alone, or united with the model.
+    pub output: SurfaceOutput,
 }
+
+/// What a pattern on a surface is made into.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize, Deserialize)]
+#[non_exhaustive]
+pub enum SurfaceOutput {
+    /// The pattern alone: a shell lying on the surface.
+    #[default]
+    Pattern,
+    /// The pattern united with the model into one solid, standing out of it.
+    Emboss,
+}
+
+/// How deep an embossed band's underside sinks into the model, mm: the
+/// two solids then overlap instead of touching face to face, so that the
+/// union is sure to weld them into one body.
+pub const EMBOSS_SINK_MM: f64 = 0.3;
 
 impl Default for SurfaceSettings {
     fn default() -> Self {
-        SurfaceSettings { points_mm: Vec::new(), closed: false, twist_deg: 0.0, step_mm: 0.5 }
+        SurfaceSettings {
+            points_mm: Vec::new(),
+            closed: false,
+            twist_deg: 0.0,
+            step_mm: 0.5,
+            output: SurfaceOutput::Pattern,
+        }
     }
 }
 

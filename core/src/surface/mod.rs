@@ -23,7 +23,7 @@ mod trace;
 pub use band::{BandOnSurface, Sheet, lay_band};
 pub use bases::{BASE_NAMES, builtin_base};
 pub use chart::{Chart, ChartError, MIN_POINTS};
-pub use drawn::{Drawn, DrawnError, SNAP_REPORT_MM, SurfaceSettings, draw_on};
+pub use drawn::{Drawn, DrawnError, EMBOSS_SINK_MM, SNAP_REPORT_MM, SurfaceOutput, SurfaceSettings, draw_on};
 pub use frames::Frames;
 pub use ring_domain::SplineDomain;
 pub use shade::{MAX_SHADE_MM, Shade, ShadeError};

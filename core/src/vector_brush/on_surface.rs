@@ -9,10 +9,12 @@ use crate::Product;
 use crate::control::{Control, MaybeCancelled};
 use crate::curve::Curve;
 use crate::geom::fill_triangles;
-use crate::mesh::MeshError;
+use crate::mesh::{BooleanError, MeshError, union_solids};
 use crate::product::{Fact, Facts};
 use crate::report::Timings;
-use crate::surface::{BandOnSurface, DrawnError, Sheet, SurfaceMesh, SurfaceSettings, draw_on, lay_band};
+use crate::surface::{
+    BandOnSurface, DrawnError, EMBOSS_SINK_MM, Sheet, SurfaceMesh, SurfaceOutput, SurfaceSettings, draw_on, lay_band,
+};
 
 /// Why a pattern could not be put on a surface.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
@@ -30,6 +32,9 @@ pub enum SurfaceSynthesisError {
     /// The pattern could not be made solid on the surface.
     #[error(transparent)]
     Mesh(#[from] MeshError),
+    /// The pattern could not be united with the model.
+    #[error(transparent)]
+    Boolean(#[from] BooleanError),
 }
 
 impl MaybeCancelled for SurfaceSynthesisError {
@@ -85,7 +90,12 @@ pub fn make_on_surface(
     control.report(0.8);
     let band = BandOnSurface { surface, curve: &on.curve, frames: &on.frames, conform: drawn.twist_deg == 0.0 };
     let region = &synthesis.planar.region;
-    let mesh = timings.time("lay on surface", || lay_band(region, sheet, &band, settings.thickness_mm))?;
+    let sink_mm = if drawn.output == SurfaceOutput::Emboss { EMBOSS_SINK_MM } else { 0.0 };
+    let mut mesh = timings.time("lay on surface", || lay_band(region, sheet, &band, settings.thickness_mm, sink_mm))?;
+    let band_shells = mesh.shell_count();
+    if drawn.output == SurfaceOutput::Emboss {
+        mesh = timings.time("emboss", || union_solids(surface.mesh(), &mesh))?;
+    }
 
     let mut warnings = on.warnings.clone();
     warnings.extend(synthesis.warnings.iter().cloned());
@@ -102,6 +112,7 @@ pub fn make_on_surface(
     );
     facts.push("pieces", Fact::Count(synthesis.solution.pieces.len()));
     facts.push("thickness_mm", Fact::Number(settings.thickness_mm));
+    facts.push("band_shells", Fact::Count(band_shells));
     facts.push("shells", Fact::Count(mesh.shell_count()));
     Ok(Product {
         fill_mm: fill_triangles(region),
