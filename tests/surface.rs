@@ -167,6 +167,39 @@ fn an_embossed_ring_and_the_vase_are_one_watertight_body() {
 }
 
 #[test]
+fn a_pattern_without_holes_carved_out_of_the_egg_leaves_one_open_shell() {
+    let dir = tempdir("surface-carve");
+    let args = ["--exemplar", "vine", "--mesh", "egg", "--points", "21,0,20;15,-15,30;0,-19,40", "--band", "8"];
+    let (carved, alone) = (dir.join("c.stl"), dir.join("p.stl"));
+    let path = |p: &std::path::Path| p.display().to_string();
+    let json = report_of(
+        "surface",
+        &[&args[..], &["--holes", "0", "--mode", "carve", "--wall", "2", "--stl", &path(&carved)]].concat(),
+        &dir.join("c.json"),
+    );
+    report_of("surface", &[&args[..], &["--holes", "0", "--stl", &path(&alone)]].concat(), &dir.join("p.json"));
+    let check = check_stl(&carved);
+    assert_eq!((check.open_edges, check.misoriented_edges), (0, 0), "{check:?}");
+    // The egg's outside and inside, joined through the opening the vine
+    // leaves: one shell, a ball with no handle.
+    assert_eq!(check.shells, 1, "{check:?} {json}");
+    assert_eq!(check.euler, 2, "{check:?} {json}");
+    assert!(!json.contains("separate pieces"), "{json}");
+    // Every vertex lies in the wall: on the egg or at most 2 mm inside it.
+    let egg = SurfaceMesh::new(builtin_base("egg").unwrap()).unwrap();
+    for v in stl_vertices(&carved) {
+        let on = egg.closest_point(v).position_mm;
+        let off = ((on.x - v[0]).powi(2) + (on.y - v[1]).powi(2) + (on.z - v[2]).powi(2)).sqrt();
+        assert!(off <= 2.0 + 0.02, "vertex {v:?} is {off} mm from the egg");
+    }
+    // What was cut away is about the vine's own volume (as thick as the wall).
+    let read = |p: &std::path::Path| tracery_core::mesh::read_stl(&std::fs::read(p).unwrap(), "test").unwrap();
+    let full = tracery_core::surface::hollow(&egg, 2.0).unwrap().signed_volume();
+    let (cut, vine) = (full - read(&carved).signed_volume(), read(&alone).signed_volume());
+    assert!((cut - vine).abs() < 0.25 * vine, "cut away {cut:.0} mm³, the vine is {vine:.0} mm³");
+}
+
+#[test]
 fn bad_surfaces_fail_with_one_line_and_no_file() {
     let dir = tempdir("surface-bad");
     let stl = dir.join("bad.stl");
@@ -189,6 +222,8 @@ fn bad_surfaces_fail_with_one_line_and_no_file() {
         (vec!["--mesh", &crowded, "--points", "0,0,0;1,0,0"], "shared by more than two triangles"),
         (vec!["--mesh", &text, "--points", "0,0,0;1,0,0"], "is not a valid STL file"),
         (vec!["--mesh", "egg", "--points", "0,0,0;1,1,1", "--along", "line:10"], "not --along"),
+        (vec!["--mesh", "vase", "--points", "30,0,25;0,30,25", "--mode", "carve", "--wall", "6"], "for a 6 mm wall"),
+        (vec!["--mesh", "egg", "--points", "21,0,20;0,-19,40", "--mode", "carve", "--wall", "0"], "wall 0 mm"),
     ] {
         let out = tracery().args(["surface", "--exemplar", "lace", "--stl"]).arg(&stl).args(&args).output().unwrap();
         let stderr = String::from_utf8_lossy(&out.stderr);

@@ -110,6 +110,12 @@ pub enum Warning {
         /// The band used, mm.
         used_mm: f64,
     },
+    /// Carving the pattern out cut the shell into several bodies (each
+    /// hole of the pattern cuts one loose; a ring all round severs it).
+    CarvedApart {
+        /// Bodies left.
+        bodies: usize,
+    },
 }
 
 impl std::fmt::Display for Warning {
@@ -174,6 +180,10 @@ impl std::fmt::Display for Warning {
             Warning::BandNarrowedOnSurface { asked_mm, used_mm } => write!(
                 f,
                 "the curve turns too tightly on the surface for a {asked_mm:.1} mm band: it was narrowed to {used_mm:.1} mm"
+            ),
+            Warning::CarvedApart { bodies } => write!(
+                f,
+                "carving the pattern out leaves the shell in {bodies} separate pieces: each hole of the pattern cuts one loose, and a ring all round the model cuts it in two; for one piece, carve a pattern with no holes (--holes 0) along an open curve"
             ),
         }
     }

@@ -24,6 +24,8 @@ pub enum SurfaceMode {
     Pattern,
     /// The pattern united with the model into one solid.
     Emboss,
+    /// The pattern cut out of the model hollowed to a shell (see --wall).
+    Carve,
 }
 
 /// Flags of `tracery surface`.
@@ -48,6 +50,9 @@ pub struct SurfaceArgs {
     /// What to make.
     #[arg(long, value_enum, default_value_t)]
     pub mode: SurfaceMode,
+    /// Wall of the shell the pattern is carved out of, mm [default: 2].
+    #[arg(long)]
+    pub wall: Option<f64>,
     #[command(flatten)]
     pub output: OutputArgs,
     #[command(flatten)]
@@ -64,7 +69,9 @@ impl SurfaceArgs {
         s.output = match self.mode {
             SurfaceMode::Pattern => SurfaceOutput::Pattern,
             SurfaceMode::Emboss => SurfaceOutput::Emboss,
+            SurfaceMode::Carve => SurfaceOutput::Carve,
         };
+        s.wall_mm = self.wall.unwrap_or(s.wall_mm);
         s.validate()?;
         Ok(s)
     }

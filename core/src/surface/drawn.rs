@@ -29,8 +29,11 @@ pub struct SurfaceSettings {
     pub twist_deg: f64,
     /// Longest step of the traced curve between mesh edges, mm.
     pub step_mm: f64,
-    /// What is made: the pattern alone, or united with the model.
+    /// What is made: the pattern alone, united with the model, or cut out
+    /// of a shell of it.
     pub output: SurfaceOutput,
+    /// The wall of the shell a pattern is carved out of, mm.
+    pub wall_mm: f64,
 }
 
 /// What a pattern on a surface is made into.
@@ -42,11 +45,15 @@ pub enum SurfaceOutput {
     Pattern,
     /// The pattern united with the model into one solid, standing out of it.
     Emboss,
+    /// The pattern cut out of the model hollowed to a shell of
+    /// [`SurfaceSettings::wall_mm`]: openings where the pattern is.
+    Carve,
 }
 
 /// How deep an embossed band's underside sinks into the model, mm: the
 /// two solids then overlap instead of touching face to face, so that the
-/// union is sure to weld them into one body.
+/// union is sure to weld them into one body. A carved band reaches this
+/// far past both sides of the shell, so the cut goes clean through.
 pub const EMBOSS_SINK_MM: f64 = 0.3;
 
 impl Default for SurfaceSettings {
@@ -57,6 +64,7 @@ impl Default for SurfaceSettings {
             twist_deg: 0.0,
             step_mm: 0.5,
             output: SurfaceOutput::Pattern,
+            wall_mm: 2.0,
         }
     }
 }
@@ -118,6 +126,9 @@ impl SurfaceSettings {
         }
         if !(self.step_mm.is_finite() && self.step_mm > 0.0) {
             return Err(DrawnError::Setting(format!("curve step {} mm is not positive", self.step_mm)));
+        }
+        if !(self.wall_mm.is_finite() && self.wall_mm > 0.0) {
+            return Err(DrawnError::Setting(format!("wall {} mm is not positive", self.wall_mm)));
         }
         Ok(())
     }

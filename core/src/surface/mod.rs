@@ -7,13 +7,15 @@
 //!   [`crate::mesh::read_mesh_file`]): checked ([`SurfaceMesh`]), the part
 //!   around the picked points laid flat ([`Chart`]), a spline traced on it
 //!   ([`trace`], drawn in a [`SplineDomain`]), smooth frames along it ([`Frames`]), all in [`draw_on`];
-//!   then a band made along it laid on the surface ([`lay_band`]).
+//!   then a band made along it laid on the surface ([`lay_band`]), and for
+//!   carving, the model hollowed to a shell ([`hollow`]).
 
 mod band;
 mod bases;
 mod chart;
 mod drawn;
 mod frames;
+mod hollow;
 mod ring_domain;
 mod shade;
 mod sheet;
@@ -25,6 +27,7 @@ pub use bases::{BASE_NAMES, builtin_base};
 pub use chart::{Chart, ChartError, MIN_POINTS};
 pub use drawn::{Drawn, DrawnError, EMBOSS_SINK_MM, SNAP_REPORT_MM, SurfaceOutput, SurfaceSettings, draw_on};
 pub use frames::Frames;
+pub use hollow::{HollowError, hollow};
 pub use ring_domain::SplineDomain;
 pub use shade::{MAX_SHADE_MM, Shade, ShadeError};
 pub use sheet::{

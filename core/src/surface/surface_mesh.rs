@@ -186,6 +186,11 @@ impl SurfaceMesh {
         blended.try_normalize().unwrap_or_else(|| self.face_normal(face))
     }
 
+    /// The smooth (angle-weighted) normal at vertex `v`.
+    pub fn vertex_normal(&self, v: u32) -> DVec3 {
+        self.vertex_normals[v as usize]
+    }
+
     /// The flat normal of `face`.
     pub fn face_normal(&self, face: u32) -> DVec3 {
         let p = self.mesh.triangles[face as usize].map(|i| self.positions[i as usize]);

@@ -9,11 +9,12 @@ use crate::Product;
 use crate::control::{Control, MaybeCancelled};
 use crate::curve::Curve;
 use crate::geom::fill_triangles;
-use crate::mesh::{BooleanError, MeshError, union_solids};
+use crate::mesh::{BooleanError, MeshError, difference_solids, union_solids};
 use crate::product::{Fact, Facts};
-use crate::report::Timings;
+use crate::report::{Timings, Warning};
 use crate::surface::{
-    BandOnSurface, DrawnError, EMBOSS_SINK_MM, Sheet, SurfaceMesh, SurfaceOutput, SurfaceSettings, draw_on, lay_band,
+    BandOnSurface, DrawnError, EMBOSS_SINK_MM, HollowError, Sheet, SurfaceMesh, SurfaceOutput, SurfaceSettings,
+    draw_on, hollow, lay_band,
 };
 
 /// Why a pattern could not be put on a surface.
@@ -32,9 +33,12 @@ pub enum SurfaceSynthesisError {
     /// The pattern could not be made solid on the surface.
     #[error(transparent)]
     Mesh(#[from] MeshError),
-    /// The pattern could not be united with the model.
+    /// The pattern could not be united with the model, or cut out of it.
     #[error(transparent)]
     Boolean(#[from] BooleanError),
+    /// The model could not be hollowed for carving.
+    #[error(transparent)]
+    Hollow(#[from] HollowError),
 }
 
 impl MaybeCancelled for SurfaceSynthesisError {
@@ -90,14 +94,27 @@ pub fn make_on_surface(
     control.report(0.8);
     let band = BandOnSurface { surface, curve: &on.curve, frames: &on.frames, conform: drawn.twist_deg == 0.0 };
     let region = &synthesis.planar.region;
-    let sink_mm = if drawn.output == SurfaceOutput::Emboss { EMBOSS_SINK_MM } else { 0.0 };
-    let mut mesh = timings.time("lay on surface", || lay_band(region, sheet, &band, settings.thickness_mm, sink_mm))?;
+    // A carved band only has to reach through the shell, a hair past both sides.
+    let (sink_mm, thickness_mm) = match drawn.output {
+        SurfaceOutput::Emboss => (EMBOSS_SINK_MM, settings.thickness_mm),
+        SurfaceOutput::Carve => (drawn.wall_mm + EMBOSS_SINK_MM, EMBOSS_SINK_MM),
+        _ => (0.0, settings.thickness_mm),
+    };
+    let mut mesh = timings.time("lay on surface", || lay_band(region, sheet, &band, thickness_mm, sink_mm))?;
     let band_shells = mesh.shell_count();
     if drawn.output == SurfaceOutput::Emboss {
         mesh = timings.time("emboss", || union_solids(surface.mesh(), &mesh))?;
     }
-
     let mut warnings = on.warnings.clone();
+    if drawn.output == SurfaceOutput::Carve {
+        let shell = timings.time("hollow", || hollow(surface, drawn.wall_mm))?;
+        mesh = timings.time("carve", || difference_solids(&shell, &mesh))?;
+        let bodies = mesh.shell_count();
+        if bodies > 1 {
+            warnings.push(Warning::CarvedApart { bodies });
+        }
+    }
+
     warnings.extend(synthesis.warnings.iter().cloned());
     let mut facts = Facts::default();
     facts.push("curve_length_mm", Fact::Number(length_mm));
