@@ -140,6 +140,19 @@ impl OutputArgs {
         }
     }
 
+    /// Refuses the flags a pattern laid on a surface cannot use: `--along`
+    /// (`command` takes its shape from `shape_from`), and the print edits
+    /// made on a flat region (`--thicken`, `--jump-ring`) not yet made on `what`.
+    pub fn refuse_planar_only(&self, command: &str, shape_from: &str, what: &str) -> Result<()> {
+        if self.along.is_some() {
+            bail!("tracery {command} takes its {shape_from}, not --along");
+        }
+        if self.print.thicken || !self.print.jump_ring.is_empty() {
+            bail!("--thicken and --jump-ring are not available on {what} yet");
+        }
+        Ok(())
+    }
+
     /// The SVG options these flags ask for.
     pub fn svg_options(&self) -> Result<SvgOptions> {
         let kerf_mm = self.kerf.unwrap_or(0.0);

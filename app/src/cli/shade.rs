@@ -60,12 +60,7 @@ impl ShadeArgs {
 
 /// Runs `tracery shade`.
 pub fn run(args: ShadeArgs) -> Result<()> {
-    if args.output.along.is_some() {
-        bail!("tracery shade takes its shape from --cylinder or --cone, not --along");
-    }
-    if args.output.print.thicken || !args.output.print.jump_ring.is_empty() {
-        bail!("--thicken and --jump-ring are not available on shades yet");
-    }
+    args.output.refuse_planar_only("shade", "shape from --cylinder or --cone", "shades")?;
     let settings = args.brush.settings();
     settings.validate()?;
     let (shade, spec) = args.shade_settings()?;

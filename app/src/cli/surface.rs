@@ -90,12 +90,7 @@ pub fn load_base(spec: &str) -> Result<Mesh> {
 
 /// Runs `tracery surface`.
 pub fn run(args: SurfaceArgs) -> Result<()> {
-    if args.output.along.is_some() {
-        bail!("tracery surface takes its curve from --points on --mesh, not --along");
-    }
-    if args.output.print.thicken || !args.output.print.jump_ring.is_empty() {
-        bail!("--thicken and --jump-ring are not available on surfaces yet");
-    }
+    args.output.refuse_planar_only("surface", "curve from --points on --mesh", "surfaces")?;
     let settings = args.brush.settings();
     settings.validate()?;
     let drawn = args.surface_settings()?;
