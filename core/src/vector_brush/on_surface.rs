@@ -102,19 +102,19 @@ pub fn make_on_surface(
     };
     let mut mesh = timings.time("lay on surface", || lay_band(region, sheet, &band, thickness_mm, sink_mm))?;
     let band_shells = mesh.shell_count();
-    if drawn.output == SurfaceOutput::Emboss {
-        mesh = timings.time("emboss", || union_solids(surface.mesh(), &mesh))?;
-    }
-    let mut warnings = on.warnings.clone();
-    if drawn.output == SurfaceOutput::Carve {
-        let shell = timings.time("hollow", || hollow(surface, drawn.wall_mm))?;
-        mesh = timings.time("carve", || difference_solids(&shell, &mesh))?;
-        let bodies = mesh.shell_count();
-        if bodies > 1 {
-            warnings.push(Warning::CarvedApart { bodies });
+    match drawn.output {
+        SurfaceOutput::Emboss => mesh = timings.time("emboss", || union_solids(surface.mesh(), &mesh))?,
+        SurfaceOutput::Carve => {
+            let shell = timings.time("hollow", || hollow(surface, drawn.wall_mm))?;
+            mesh = timings.time("carve", || difference_solids(&shell, &mesh))?;
         }
+        _ => {}
     }
-
+    let shells = if drawn.output == SurfaceOutput::Pattern { band_shells } else { mesh.shell_count() };
+    let mut warnings = on.warnings.clone();
+    if drawn.output == SurfaceOutput::Carve && shells > 1 {
+        warnings.push(Warning::CarvedApart { bodies: shells });
+    }
     warnings.extend(synthesis.warnings.iter().cloned());
     let mut facts = Facts::default();
     facts.push("curve_length_mm", Fact::Number(length_mm));
@@ -130,7 +130,7 @@ pub fn make_on_surface(
     facts.push("pieces", Fact::Count(synthesis.solution.pieces.len()));
     facts.push("thickness_mm", Fact::Number(settings.thickness_mm));
     facts.push("band_shells", Fact::Count(band_shells));
-    facts.push("shells", Fact::Count(mesh.shell_count()));
+    facts.push("shells", Fact::Count(shells));
     Ok(Product {
         fill_mm: fill_triangles(region),
         region_mm: region.clone(),
