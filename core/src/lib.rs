@@ -31,6 +31,7 @@
 
 pub mod control;
 pub mod curve;
+pub mod disjoint_sets;
 pub mod export;
 pub mod geom;
 pub mod mesh;

@@ -58,33 +58,13 @@ pub fn extrude(region: &Region, thickness_mm: f64) -> Result<Mesh, MeshError> {
     with_repairs(region, |region, split_junctions| extrude_exactly(region, thickness_mm, split_junctions, None))
 }
 
-/// Like [`extrude`], with the top and bottom cut into well-shaped
-/// triangles (no angle under 20°, no edge much over `edge_mm`; spade's
-/// Delaunay refinement), for a solid that will be bent: a long sliver
-/// split until it follows a curved surface crumbles into thousands.
-///
-/// ```
-/// use tracery_core::mesh::{extrude, extrude_fine};
-/// use tracery_core::DVec2;
-/// use tracery_core::geom::{Polygon, Region};
-/// let strip = vec![DVec2::new(0.0, 0.0), DVec2::new(40.0, 0.0), DVec2::new(40.0, 2.0), DVec2::new(0.0, 2.0)];
-/// let region = Region::new(vec![Polygon { outer: strip, holes: vec![] }]);
-/// let mesh = extrude_fine(&region, 1.0, 1.0).unwrap();
-/// assert!(mesh.sanity_check().is_ok());
-/// assert!(mesh.triangles.len() > extrude(&region, 1.0).unwrap().triangles.len());
-/// ```
-pub fn extrude_fine(region: &Region, thickness_mm: f64, edge_mm: f64) -> Result<Mesh, MeshError> {
-    checked_thickness(thickness_mm)?;
-    let sheet = triangulate_fine(region, edge_mm)?;
-    let top: Vec<[f64; 3]> = sheet.vertices.iter().map(|v| [v[0], v[1], thickness_mm]).collect();
-    Ok(super::thicken(&sheet, &sheet.vertices, &top))
-}
-
-/// The inside of `region` cut into well-shaped triangles, as in
-/// [`extrude_fine`]: an open sheet in the plane `z = 0`, counter-clockwise
-/// seen from `+z`, whose boundary edges are the rings' edges (split where
-/// refinement split them). A solid bent onto a surface is made from it with
-/// [`super::thicken`].
+/// The inside of `region` cut into well-shaped triangles (no angle under
+/// 20°, no edge much over `edge_mm`; spade's Delaunay refinement): an open
+/// sheet in the plane `z = 0`, counter-clockwise seen from `+z`, whose
+/// boundary edges are the rings' edges (split where refinement split them).
+/// It is for a pattern that will be bent: a long sliver split until it
+/// follows a curved surface would crumble into thousands. The bent sheet is
+/// made solid with [`super::thicken`].
 ///
 /// ```
 /// use tracery_core::mesh::triangulate_fine;
@@ -102,7 +82,8 @@ pub fn triangulate_fine(region: &Region, edge_mm: f64) -> Result<Mesh, MeshError
     with_repairs(region, |region, split_junctions| extrude_exactly(region, 0.0, split_junctions, Some(edge_mm)))
 }
 
-fn checked_thickness(thickness_mm: f64) -> Result<(), MeshError> {
+/// `Ok` for a thickness a solid can have: a positive number of mm.
+pub(crate) fn checked_thickness(thickness_mm: f64) -> Result<(), MeshError> {
     if thickness_mm.is_finite() && thickness_mm > 0.0 { Ok(()) } else { Err(MeshError::Thickness(thickness_mm)) }
 }
 
@@ -318,21 +299,32 @@ fn refined(mut cdt: ConstrainedDelaunayTriangulation<Point2<f64>>, edge_mm: f64)
             .collect(),
     };
     // Vertices refinement placed outside the material are left out.
-    compact(sheet)
+    compact(sheet).0
 }
 
-/// Drops vertices no triangle uses.
-fn compact(mesh: Mesh) -> Mesh {
+/// Drops vertices no triangle uses; with, for each vertex kept, its index
+/// in `mesh` (so that values kept beside the vertices can follow them).
+///
+/// ```
+/// use tracery_core::mesh::{Mesh, compact};
+/// let mesh = Mesh { vertices: vec![[9.0; 3], [0.0; 3], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0]], triangles: vec![[1, 2, 3]] };
+/// let (out, kept) = compact(mesh);
+/// assert_eq!(out.triangles, vec![[0, 1, 2]]);
+/// assert_eq!(kept, vec![1, 2, 3]);
+/// ```
+pub fn compact(mesh: Mesh) -> (Mesh, Vec<u32>) {
     let mut index = vec![u32::MAX; mesh.vertices.len()];
+    let mut kept = Vec::new();
     let mut out = Mesh { vertices: Vec::new(), triangles: Vec::with_capacity(mesh.triangles.len()) };
     for t in &mesh.triangles {
         out.triangles.push(t.map(|v| {
             if index[v as usize] == u32::MAX {
                 index[v as usize] = out.vertices.len() as u32;
                 out.vertices.push(mesh.vertices[v as usize]);
+                kept.push(v);
             }
             index[v as usize]
         }));
     }
-    out
+    (out, kept)
 }

@@ -13,7 +13,8 @@ mod thicken;
 mod triangle_mesh;
 
 pub use boolean::{BooleanError, difference_solids, union_solids};
-pub use extrude::{MeshError, extrude, extrude_fine, triangulate_fine};
+pub(crate) use extrude::checked_thickness;
+pub use extrude::{MeshError, compact, extrude, triangulate_fine};
 pub use import::{ImportError, MAX_IMPORTED_TRIANGLES, read_mesh_file, read_obj, read_stl};
 pub use refine::split_edges;
 pub use sanity::MeshDefect;

@@ -13,28 +13,20 @@ impl Mesh {
     /// Number of shells: groups of triangles connected through shared edges.
     pub fn shell_count(&self) -> usize {
         let n = self.triangles.len();
-        let mut parent: Vec<usize> = (0..n).collect();
-        fn find(parent: &mut [usize], mut x: usize) -> usize {
-            while parent[x] != x {
-                parent[x] = parent[parent[x]];
-                x = parent[x];
-            }
-            x
-        }
+        let mut sets = crate::disjoint_sets::DisjointSets::new(n);
         let mut by_edge: std::collections::HashMap<(u32, u32), usize> = std::collections::HashMap::new();
         for (t, tri) in self.triangles.iter().enumerate() {
             for k in 0..3 {
                 let (a, b) = (tri[k], tri[(k + 1) % 3]);
                 let key = (a.min(b), a.max(b));
                 if let Some(&other) = by_edge.get(&key) {
-                    let (ra, rb) = (find(&mut parent, t), find(&mut parent, other));
-                    parent[ra] = rb;
+                    sets.join(t, other);
                 } else {
                     by_edge.insert(key, t);
                 }
             }
         }
-        (0..n).filter(|&t| find(&mut parent, t) == t).count()
+        (0..n).filter(|&t| sets.find(t) == t).count()
     }
 }
 

@@ -114,15 +114,7 @@ pub fn check(region: &Region, seams_mm: &[[DVec2; 2]], settings: &PrintSettings,
 
 /// Narrow places whose discs lie within `width` of each other are one flaw.
 fn group(places: Vec<Narrow>, width: f64) -> Vec<Flaw> {
-    let n = places.len();
-    let mut parent: Vec<usize> = (0..n).collect();
-    fn find(parent: &mut [usize], mut x: usize) -> usize {
-        while parent[x] != x {
-            parent[x] = parent[parent[x]];
-            x = parent[x];
-        }
-        x
-    }
+    let mut sets = crate::disjoint_sets::DisjointSets::new(places.len());
     let cell_of = |p: DVec2| ((p.x / width).floor() as i64, (p.y / width).floor() as i64);
     let mut grid: FxHashMap<(i64, i64), Vec<usize>> = FxHashMap::default();
     for (i, p) in places.iter().enumerate() {
@@ -134,8 +126,7 @@ fn group(places: Vec<Narrow>, width: f64) -> Vec<Flaw> {
             for y in cy - 1..=cy + 1 {
                 for &j in grid.get(&(x, y)).into_iter().flatten() {
                     if j > i && places[j].centre_mm.distance(p.centre_mm) <= width {
-                        let (a, b) = (find(&mut parent, i), find(&mut parent, j));
-                        parent[a] = b;
+                        sets.join(i, j);
                     }
                 }
             }
@@ -143,7 +134,7 @@ fn group(places: Vec<Narrow>, width: f64) -> Vec<Flaw> {
     }
     let mut flaws: FxHashMap<usize, Flaw> = FxHashMap::default();
     for (i, p) in places.iter().enumerate() {
-        let root = find(&mut parent, i);
+        let root = sets.find(i);
         let flaw = flaws.entry(root).or_insert_with(|| Flaw {
             at_mm: p.centre_mm,
             width_mm: p.width_mm,
@@ -159,7 +150,7 @@ fn group(places: Vec<Narrow>, width: f64) -> Vec<Flaw> {
     }
     let mut significant: FxHashMap<usize, bool> = FxHashMap::default();
     for (i, p) in places.iter().enumerate() {
-        let root = find(&mut parent, i);
+        let root = sets.find(i);
         *significant.entry(root).or_default() |= p.apart_along_outline_mm >= FLAW_SIDES_APART_WIDTHS * width;
     }
     flaws.retain(|root, _| significant[root]);

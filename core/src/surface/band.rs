@@ -21,8 +21,9 @@ use std::f64::consts::TAU;
 use glam::{DVec2, DVec3};
 
 use super::{CHORD_TOLERANCE_MM, Frames, SurfaceCurve, SurfaceMesh};
+use crate::disjoint_sets::DisjointSets;
 use crate::geom::Region;
-use crate::mesh::{Mesh, MeshError, split_edges, thicken, triangulate_fine};
+use crate::mesh::{Mesh, MeshError, checked_thickness, compact, split_edges, thicken, triangulate_fine};
 
 /// About the longest edge of the sheet's triangulation, mm: on a radius of
 /// 10 mm an edge this long stands 0.01 mm off the surface at its middle.
@@ -122,9 +123,7 @@ pub fn lay_band(
     thickness_mm: f64,
     sink_mm: f64,
 ) -> Result<Mesh, MeshError> {
-    if !(thickness_mm.is_finite() && thickness_mm > 0.0) {
-        return Err(MeshError::Thickness(thickness_mm));
-    }
+    checked_thickness(thickness_mm)?;
     // Well-shaped triangles first: a long sliver split until it follows
     // the surface would crumble into thousands.
     let flat = triangulate_fine(sheet_mm, FINE_EDGE_MM)?;
@@ -180,46 +179,31 @@ fn weld_tiny_edges(sheet: Mesh, bottom: Vec<[f64; 3]>, top: Vec<[f64; 3]>) -> (M
         let d = |p: &[[f64; 3]]| DVec3::from_array(p[a]).distance(DVec3::from_array(p[b]));
         d(&bottom).min(d(&top))
     };
-    let mut parent: Vec<u32> = (0..sheet.vertices.len() as u32).collect();
-    fn root(parent: &mut [u32], mut v: u32) -> u32 {
-        while parent[v as usize] != v {
-            parent[v as usize] = parent[parent[v as usize] as usize];
-            v = parent[v as usize];
-        }
-        v
-    }
+    let mut sets = DisjointSets::new(sheet.vertices.len());
     let mut welded = false;
     for t in &sheet.triangles {
         for k in 0..3 {
-            let (a, b) = (t[k], t[(k + 1) % 3]);
-            if apart(a as usize, b as usize) < WELD_MM {
-                let (ra, rb) = (root(&mut parent, a), root(&mut parent, b));
-                parent[ra.max(rb) as usize] = ra.min(rb);
-                welded |= ra != rb;
+            let (a, b) = (t[k] as usize, t[(k + 1) % 3] as usize);
+            if apart(a, b) < WELD_MM {
+                welded |= sets.join(a, b);
             }
         }
     }
     if !welded {
         return (sheet, bottom, top);
     }
-    let mut index = vec![u32::MAX; sheet.vertices.len()];
-    let mut out = Mesh::default();
-    let (mut out_bottom, mut out_top) = (Vec::new(), Vec::new());
-    for t in &sheet.triangles {
-        let t = t.map(|v| root(&mut parent, v));
-        if t[0] == t[1] || t[1] == t[2] || t[2] == t[0] {
-            continue;
-        }
-        out.triangles.push(t.map(|v| {
-            if index[v as usize] == u32::MAX {
-                index[v as usize] = out.vertices.len() as u32;
-                out.vertices.push(sheet.vertices[v as usize]);
-                out_bottom.push(bottom[v as usize]);
-                out_top.push(top[v as usize]);
-            }
-            index[v as usize]
-        }));
-    }
+    let collapsed = Mesh {
+        vertices: sheet.vertices,
+        triangles: sheet
+            .triangles
+            .iter()
+            .map(|t| t.map(|v| sets.find(v as usize) as u32))
+            .filter(|t| t[0] != t[1] && t[1] != t[2] && t[2] != t[0])
+            .collect(),
+    };
+    let (out, kept) = compact(collapsed);
+    let out_bottom = kept.iter().map(|&v| bottom[v as usize]).collect();
+    let out_top = kept.iter().map(|&v| top[v as usize]).collect();
     (out, out_bottom, out_top)
 }
 
