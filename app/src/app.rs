@@ -66,6 +66,8 @@ pub struct TraceryApp {
     /// Commands asked for during this frame's layout, run after it.
     commands: Vec<Command>,
     waker_set: bool,
+    /// The format of egui's wgpu target, when it renders with wgpu (the 3D views draw with it).
+    pub(crate) gpu_format: Option<eframe::wgpu::TextureFormat>,
 }
 
 impl TraceryApp {
@@ -99,6 +101,7 @@ impl TraceryApp {
             history_handled: false,
             commands: Vec::new(),
             waker_set: false,
+            gpu_format: None,
         }
     }
 
@@ -293,8 +296,9 @@ impl TraceryApp {
 }
 
 impl eframe::App for TraceryApp {
-    fn ui(&mut self, ui: &mut egui::Ui, _frame: &mut eframe::Frame) {
+    fn ui(&mut self, ui: &mut egui::Ui, frame: &mut eframe::Frame) {
         let ctx = ui.ctx().clone();
+        self.gpu_format = frame.wgpu_render_state().map(|r| r.target_format);
         let before = self.doc.clone();
         self.commands.extend(Command::pressed(&ctx));
         self.dropped_files(&ctx);

@@ -18,6 +18,7 @@ pub mod panels;
 pub mod solutions;
 pub mod state;
 pub mod tools;
+pub mod view3d;
 pub mod worker;
 
 pub use app::TraceryApp;

@@ -7,6 +7,7 @@ use std::sync::Arc;
 
 use serde::{Deserialize, Serialize};
 use tracery_core::DVec2;
+use tracery_core::Product;
 use tracery_core::curve::Curve;
 use tracery_core::export::SvgOptions;
 use tracery_core::geom::{Region, fill_triangles};
@@ -16,8 +17,8 @@ use tracery_core::vector_brush::{Exemplar, SlicingMode};
 
 use crate::canvas::View;
 use crate::document::{AvoidStroke, CurveItem, Document, DocumentError, ExemplarRef, ModeSettings, avoided_region};
-use crate::panels::preview_3d::Orbit;
 use crate::tools::Tool;
+use crate::view3d::{Orbit, ViewMesh};
 
 /// Remembered between runs through eframe's storage.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
@@ -116,6 +117,9 @@ pub struct Caches {
     /// alive here, so an address is not reused while its entry exists).
     textures: HashMap<usize, (Arc<[u8]>, egui::TextureHandle)>,
     avoided: Avoided,
+    /// Products' meshes as the 3D view draws them, by the product's address
+    /// (kept alive here, so an address is not reused while its entry exists).
+    view_meshes: HashMap<usize, (Arc<Product>, Arc<ViewMesh>)>,
 }
 
 /// The avoided area and its triangles, and the strokes they were made from.
@@ -175,6 +179,16 @@ impl Caches {
             (texture.rgba.clone(), handle)
         });
         entry.1.id()
+    }
+
+    /// The 3D view's copy of a product's mesh, made once for as long as
+    /// something else holds the product.
+    pub fn view_mesh(&mut self, product: &Arc<Product>) -> Option<Arc<ViewMesh>> {
+        self.view_meshes.retain(|_, (p, _)| Arc::strong_count(p) > 1);
+        let mesh = product.mesh_mm.as_ref()?;
+        let key = Arc::as_ptr(product) as usize;
+        let entry = self.view_meshes.entry(key).or_insert_with(|| (product.clone(), Arc::new(ViewMesh::new(mesh))));
+        Some(entry.1.clone())
     }
 
     /// The area the avoidance brush covers in `strokes`, made again only when they change.
