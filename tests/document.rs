@@ -176,3 +176,37 @@ fn the_command_line_and_the_app_share_the_raster_defaults() {
     assert_eq!(item.settings, parsed.settings());
     assert_eq!(item.settings, tracery_core::raster_brush::Settings::default());
 }
+
+#[test]
+fn an_imported_model_and_its_curves_survive_saving_and_opening() {
+    use tracery::document::{BaseRef, SurfaceCurveItem};
+    use tracery_core::surface::builtin_base;
+    let egg = builtin_base("egg").unwrap();
+    let mut doc = Document::default();
+    let base = doc.model.import("my egg.stl", &egg).unwrap();
+    assert_eq!(base, BaseRef::Imported("my egg".into()));
+    doc.model.base = base.clone();
+    let mut template = SurfaceCurveItem::default();
+    template.surface.closed = true;
+    let id = doc.add_surface_curve(&template);
+    doc.model.curve_mut(id).unwrap().surface.points_mm = vec![[21.0, 0.0, 30.0], [0.0, 21.0, 30.0]];
+    let back = Document::from_ron(&doc.to_ron().unwrap()).unwrap();
+    assert_eq!(back, doc, "the model workspace round-trips");
+    // The embedded model is the same mesh, to the precision of a binary STL.
+    let mesh = back.model.base_mesh(&base).unwrap();
+    assert_eq!(mesh.triangles.len(), egg.triangles.len());
+    let worst = mesh
+        .vertices
+        .iter()
+        .map(|v| {
+            egg.vertices
+                .iter()
+                .map(|w| (0..3).map(|k| (v[k] - w[k]).abs()).fold(0.0, f64::max))
+                .fold(f64::INFINITY, f64::min)
+        })
+        .fold(0.0, f64::max);
+    assert!(worst < 1e-5, "an embedded vertex moved {worst} mm");
+    // A project naming a model it does not hold says so.
+    let missing = back.model.base_mesh(&BaseRef::Imported("lamp".into())).unwrap_err();
+    assert!(missing.to_string().contains("'lamp' is missing"), "{missing}");
+}

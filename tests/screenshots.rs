@@ -7,8 +7,9 @@ use egui_kittest::Harness;
 use egui_kittest::kittest::Queryable;
 use std::path::Path;
 use tracery::TraceryApp;
-use tracery::document::{ExemplarRef, ModeSettings, VectorBrushItem};
+use tracery::document::{ExemplarRef, ModeSettings, SurfaceCurveItem, VectorBrushItem};
 use tracery_core::DVec2;
+use tracery_core::surface::{SurfaceMesh, builtin_base};
 use tracery_core::vector_brush::Target;
 
 #[path = "common/drive.rs"]
@@ -16,7 +17,7 @@ mod drive;
 #[path = "common/ui.rs"]
 mod ui;
 use drive::rendered_window;
-use ui::settle;
+use ui::{settle, settle_model};
 
 fn save(harness: &mut Harness<'static, TraceryApp>, name: &str) {
     let image = harness.render().expect("rendering through wgpu");
@@ -92,4 +93,42 @@ fn regenerate_raster_screenshot() {
     }
     settle(&mut harness);
     save(&mut harness, "raster-brush.png");
+}
+
+#[test]
+#[ignore = "writes screenshots/; run on purpose"]
+fn regenerate_model_screenshot() {
+    let mut harness = rendered_window();
+    harness.get_by_label("3D model").click();
+    harness.run_steps(2);
+    {
+        let app = harness.state_mut();
+        // A ring of chain around the vase's belly, and a vine across its
+        // shoulder, as points picked while turning the model would give:
+        // on its surface.
+        let vase = SurfaceMesh::new(builtin_base("vase").unwrap()).unwrap();
+        let on_vase = |p: [f64; 3]| vase.closest_point(p).position_mm.to_array();
+        let ring = (0..6)
+            .map(|k| {
+                let a = k as f64 / 6.0 * std::f64::consts::TAU;
+                on_vase([30.0 * a.cos(), 30.0 * a.sin(), 28.0])
+            })
+            .collect();
+        let mut chain = SurfaceCurveItem::default();
+        chain.settings.band_mm = 9.0;
+        chain.surface.points_mm = ring;
+        chain.surface.closed = true;
+        let id = app.doc.add_surface_curve(&chain);
+        app.doc.model.curve_mut(id).unwrap().surface = chain.surface.clone();
+        let mut vine = SurfaceCurveItem { exemplar: ExemplarRef::Builtin("vine".into()), ..Default::default() };
+        vine.settings.holes = Target::Exactly(0);
+        vine.settings.band_mm = 10.0;
+        vine.surface.points_mm =
+            [[18.0, -12.0, 44.0], [0.0, -22.0, 50.0], [-18.0, -12.0, 56.0]].into_iter().map(on_vase).collect();
+        let v = app.doc.add_surface_curve(&vine);
+        app.doc.model.curve_mut(v).unwrap().surface = vine.surface.clone();
+        app.selected_surface = Some(id);
+    }
+    settle_model(&mut harness);
+    save(&mut harness, "model.png");
 }

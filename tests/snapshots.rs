@@ -81,6 +81,11 @@ fn preview_3d_empty() {
 }
 
 #[test]
+fn model_panel() {
+    panel_snapshot("model_panel", egui::vec2(280.0, 760.0), tracery::model::model_panel_ui);
+}
+
+#[test]
 fn every_mode_settings() {
     // One result for all modes: kittest asks that results of several
     // harnesses in one test be merged.

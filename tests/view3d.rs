@@ -33,7 +33,7 @@ fn render(draws: Vec<Draw>, orbit: Orbit) -> image::RgbaImage {
         .build_ui_state(
             move |ui: &mut egui::Ui, orbit: &mut Orbit| {
                 egui::CentralPanel::default().frame(egui::Frame::NONE).show(ui, |ui| {
-                    view_3d_ui(ui, "test", format, &draws, &[], orbit);
+                    view_3d_ui(ui, "test", format, &draws, None, orbit);
                 });
             },
             orbit,
@@ -102,7 +102,7 @@ fn a_click_casts_the_ray_onto_the_point_drawn_there() {
     let mut harness = Harness::builder().with_size(egui::vec2(400.0, 300.0)).build_ui_state(
         move |ui: &mut egui::Ui, state: &mut Picked| {
             egui::CentralPanel::default().frame(egui::Frame::NONE).show(ui, |ui| {
-                let out = view_3d_ui(ui, "pick", None, &draws, &[], &mut state.orbit);
+                let out = view_3d_ui(ui, "pick", None, &draws, None, &mut state.orbit);
                 state.rect = Some(out.response.rect);
                 state.camera = Some(out.camera);
                 if let Some(ray) = out.clicked_ray {

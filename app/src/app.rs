@@ -11,10 +11,11 @@ use crate::command::Command;
 use crate::dialogs::{Dialogs, SystemDialogs};
 use crate::document::{Document, History, ModeSettings};
 use crate::live::{LIVE_ID, LiveJob, Session};
+use crate::model::{self, SurfaceJob};
 use crate::modes::{CurveJob, GalleryJob, JobError, mode_ui};
-use crate::panels::{gallery, preview_3d, side_panel, status, top_bar};
+use crate::panels::{files, gallery, preview_3d, side_panel, status, top_bar};
 use crate::solutions::Solutions;
-use crate::state::{Caches, Persisted};
+use crate::state::{Caches, Persisted, Workspace};
 use crate::tools::Gesture;
 use crate::worker::{JobState, Worker};
 use crate::{canvas, command_handling};
@@ -43,6 +44,8 @@ pub struct TraceryApp {
     pub doc: Document,
     /// The selected curve.
     pub selected: Option<u64>,
+    /// The selected curve on the model (the model workspace's selection).
+    pub selected_surface: Option<u64>,
     /// The last message for the status bar, and whether it is an error.
     pub message: Option<(String, bool)>,
     pub(crate) history: History,
@@ -53,6 +56,8 @@ pub struct TraceryApp {
     pub(crate) gallery: Worker<GalleryJob>,
     /// The pattern of the stroke being drawn.
     pub(crate) live: Worker<LiveJob>,
+    /// Patterns of the curves on the model.
+    pub(crate) surface_worker: Worker<SurfaceJob>,
     /// What the stroke being drawn shares between its jobs.
     pub(crate) live_session: Session,
     pub(crate) gesture: Option<Gesture>,
@@ -86,6 +91,7 @@ impl TraceryApp {
         TraceryApp {
             doc: Document::default(),
             selected: None,
+            selected_surface: None,
             message: None,
             history: History::default(),
             state: Persisted::default(),
@@ -93,6 +99,7 @@ impl TraceryApp {
             worker: Worker::default(),
             gallery: Worker::default(),
             live: Worker::live(Arc::new(|| {})),
+            surface_worker: Worker::default(),
             live_session: Session::default(),
             gesture: None,
             dialogs,
@@ -145,6 +152,7 @@ impl TraceryApp {
     pub fn busy(&self) -> bool {
         self.doc.curves.iter().any(|c| self.worker.is_stale(c.id))
             || self.gallery_curve().is_some_and(|id| self.gallery.is_stale(id))
+            || self.doc.model.curves.iter().any(|c| self.surface_worker.is_stale(c.id))
     }
 
     /// The latest finished product of a curve.
@@ -235,6 +243,19 @@ impl TraceryApp {
         self.message = Some((format!("Jump ring added to Curve {id}"), false));
     }
 
+    /// The latest finished product of a curve on the model.
+    pub fn surface_output(&self, id: u64) -> Option<&Arc<tracery_core::Product>> {
+        self.surface_worker.output(id)
+    }
+
+    /// Where the pattern of a curve on the model stands.
+    pub fn surface_job_state(
+        &self,
+        id: u64,
+    ) -> Option<&JobState<tracery_core::Product, tracery_core::vector_brush::SurfaceSynthesisError>> {
+        self.surface_worker.state(id)
+    }
+
     /// The job state of a curve.
     pub fn job_state(&self, id: u64) -> Option<&JobState<tracery_core::Product, JobError>> {
         self.worker.state(id)
@@ -246,6 +267,7 @@ impl TraceryApp {
             let wake: crate::worker::Waker = Arc::new(move || ctx.request_repaint());
             self.worker.set_waker(wake.clone());
             self.gallery.set_waker(wake.clone());
+            self.surface_worker.set_waker(wake.clone());
             self.live.set_waker(wake);
             self.waker_set = true;
         }
@@ -267,15 +289,42 @@ impl TraceryApp {
             }
         }
         self.submit_live(now);
+        let surface_busy = self.submit_surface_jobs(now);
         let ids: Vec<u64> = self.doc.curves.iter().map(|c| c.id).collect();
         self.worker.retain(&ids);
         // Only the selected curve's gallery is worth the work.
         self.gallery.retain(&Vec::from_iter(gallery_curve));
         let gallery_busy = self.gallery.poll(now);
         let live_busy = self.live.poll(now);
-        if self.worker.poll(now) || gallery_busy || live_busy {
+        if self.worker.poll(now) || gallery_busy || live_busy || surface_busy {
             ctx.request_repaint_after(BUSY_REPAINT);
         }
+    }
+
+    /// Asks for the patterns of the curves on the model; returns whether any is being made.
+    fn submit_surface_jobs(&mut self, now: Instant) -> bool {
+        let base = self.doc.model.base.clone();
+        let mut ids = Vec::new();
+        if let Ok(model) = self.caches.model(&self.doc.model, &base) {
+            for item in self.doc.model.curves.iter().filter(|c| c.surface.points_mm.len() >= 2) {
+                match self.caches.exemplar(&self.doc, &item.exemplar) {
+                    Ok(exemplar) => {
+                        let job = SurfaceJob {
+                            surface: model.surface.clone(),
+                            exemplar,
+                            settings: item.settings.clone(),
+                            drawn: item.surface.clone(),
+                            print: self.doc.print,
+                        };
+                        self.surface_worker.want(item.id, job, now);
+                        ids.push(item.id);
+                    }
+                    Err(e) => self.message = Some((e.to_string(), true)),
+                }
+            }
+        }
+        self.surface_worker.retain(&ids);
+        self.surface_worker.poll(now)
     }
 
     /// One undo step per gesture: a drag of a slider or of a point counts once.
@@ -312,15 +361,18 @@ impl eframe::App for TraceryApp {
                 .exact_size(gallery::STRIP_HEIGHT)
                 .show(ui, |ui| gallery::gallery_ui(self, ui));
         }
-        egui::Panel::left("controls").resizable(true).default_size(SIDE_PANEL_WIDTH).show(ui, |ui| {
-            egui::ScrollArea::vertical().show(ui, |ui| side_panel::side_panel_ui(self, ui));
-        });
-        if self.state.show_3d {
-            egui::Panel::right("preview").resizable(true).default_size(PREVIEW_WIDTH).show(ui, |ui| {
-                preview_3d::preview_panel_ui(self, ui);
+        if self.state.workspace == Workspace::Model {
+            egui::Panel::left("model controls").resizable(true).default_size(SIDE_PANEL_WIDTH).show(ui, |ui| {
+                egui::ScrollArea::vertical().show(ui, |ui| {
+                    model::model_panel_ui(self, ui);
+                    ui.separator();
+                    files::files_ui(self, ui);
+                });
             });
+            egui::CentralPanel::default().show(ui, |ui| model::model_view_ui(self, ui));
+        } else {
+            self.canvas_workspace_ui(ui);
         }
-        egui::CentralPanel::default().show(ui, |ui| canvas::canvas_ui(self, ui));
 
         for command in std::mem::take(&mut self.commands) {
             command_handling::run(self, command);
@@ -332,6 +384,21 @@ impl eframe::App for TraceryApp {
 
     fn save(&mut self, storage: &mut dyn eframe::Storage) {
         eframe::set_value(storage, STORAGE_KEY, &self.state);
+    }
+}
+
+impl TraceryApp {
+    /// The canvas workspace: the brushes' controls, the canvas, and the 3D preview.
+    fn canvas_workspace_ui(&mut self, ui: &mut egui::Ui) {
+        egui::Panel::left("controls").resizable(true).default_size(SIDE_PANEL_WIDTH).show(ui, |ui| {
+            egui::ScrollArea::vertical().show(ui, |ui| side_panel::side_panel_ui(self, ui));
+        });
+        if self.state.show_3d {
+            egui::Panel::right("preview").resizable(true).default_size(PREVIEW_WIDTH).show(ui, |ui| {
+                preview_3d::preview_panel_ui(self, ui);
+            });
+        }
+        egui::CentralPanel::default().show(ui, |ui| canvas::canvas_ui(self, ui));
     }
 }
 

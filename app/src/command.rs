@@ -35,6 +35,8 @@ pub enum Command {
     ImportSvg,
     /// Import a PNG exemplar for the raster brush.
     ImportPng,
+    /// Import a 3D model (STL or OBJ) to draw on.
+    ImportModel,
     /// Export STL through a file dialog.
     ExportStl,
     /// Export 3MF (one object per curve) through a file dialog.
@@ -55,7 +57,7 @@ pub enum Command {
 
 impl Command {
     /// Every command, in menu order.
-    pub const ALL: [Command; 15] = [
+    pub const ALL: [Command; 16] = [
         Command::Undo,
         Command::Redo,
         Command::Open,
@@ -63,6 +65,7 @@ impl Command {
         Command::SaveAs,
         Command::ImportSvg,
         Command::ImportPng,
+        Command::ImportModel,
         Command::ExportStl,
         Command::Export3mf,
         Command::ExportSvg,
@@ -83,6 +86,7 @@ impl Command {
             Command::SaveAs => "Save…",
             Command::ImportSvg => "Import SVG…",
             Command::ImportPng => "Import PNG…",
+            Command::ImportModel => "Import model…",
             Command::ExportStl => "Export STL…",
             Command::Export3mf => "Export 3MF…",
             Command::ExportSvg => "Export SVG…",
@@ -107,6 +111,7 @@ impl Command {
             Command::SaveAs
             | Command::ImportSvg
             | Command::ImportPng
+            | Command::ImportModel
             | Command::ClearAvoided
             | Command::Export3mf
             | Command::ExportSvg

@@ -13,7 +13,20 @@ use crate::command::Command;
 use crate::dialogs::FileKind;
 use crate::document::{Document, DocumentError, ExemplarRef, ModeSettings, RasterBrushItem, VectorBrushItem};
 use crate::files::write_atomically;
+use crate::state::Workspace;
 use crate::worker::JobState;
+use tracery_core::Product;
+use tracery_core::mesh::read_mesh_file;
+use tracery_core::surface::SurfaceMesh;
+
+/// A finished job's product (`Some(None)` when it failed), or `None` while unfinished.
+fn done<E>(state: Option<&JobState<Product, E>>) -> Option<Option<&Product>> {
+    match state {
+        Some(JobState::Done(Ok(product))) => Some(Some(product.as_ref())),
+        Some(JobState::Done(Err(_))) => Some(None),
+        _ => None,
+    }
+}
 
 /// Runs `command` on the app.
 pub fn run(app: &mut TraceryApp, command: Command) {
@@ -45,6 +58,11 @@ pub fn run(app: &mut TraceryApp, command: Command) {
                 app.import_png(&p);
             }
         }
+        Command::ImportModel => {
+            if let Some(p) = app.dialogs.pick(FileKind::ImportModel) {
+                app.import_model(&p);
+            }
+        }
         Command::ExportStl => match app.dialogs.pick(FileKind::ExportStl) {
             Some(p) => app.export_stl_to(&p),
             None => app.message = Some(("No file chosen; Quick export writes without a dialog".into(), false)),
@@ -61,7 +79,10 @@ pub fn run(app: &mut TraceryApp, command: Command) {
         }
         Command::QuickExport => app.quick_export(),
         Command::Delete => app.delete_selected(),
-        Command::Deselect => app.selected = None,
+        Command::Deselect => match app.state.workspace {
+            Workspace::Canvas => app.selected = None,
+            Workspace::Model => app.selected_surface = None,
+        },
         Command::AnotherOne => app.next_alternative(),
         Command::ClearAvoided => {
             if !app.doc.avoid.is_empty() {
@@ -80,15 +101,47 @@ impl TraceryApp {
         if self.selected.is_some_and(|id| self.doc.curve(id).is_none()) {
             self.selected = None;
         }
+        if self.selected_surface.is_some_and(|id| self.doc.model.curve(id).is_none()) {
+            self.selected_surface = None;
+        }
         self.caches.forget_imported();
     }
 
     fn delete_selected(&mut self) {
+        if self.state.workspace == Workspace::Model {
+            if let Some(id) = self.selected_surface.take() {
+                self.history.record(self.doc.clone());
+                self.doc.model.curves.retain(|c| c.id != id);
+                self.history_handled = true;
+            }
+            return;
+        }
         if let Some(id) = self.selected.take() {
             self.history.record(self.doc.clone());
             self.doc.curves.retain(|c| c.id != id);
             self.history_handled = true;
         }
+    }
+
+    /// Imports a 3D model from `path` and draws on it; a model that cannot
+    /// be drawn on (broken, too large) is refused with the reason, and the
+    /// document is left as it was.
+    pub fn import_model(&mut self, path: &Path) {
+        let result = read_mesh_file(path).map_err(|e| e.to_string()).and_then(|mesh| {
+            SurfaceMesh::new(mesh.clone()).map_err(|e| format!("{}: {e}", path.display()))?;
+            let name = path.file_name().map_or_else(|| "model".into(), |n| n.to_string_lossy().into_owned());
+            let before = self.doc.clone();
+            let base = self.doc.model.import(&name, &mesh).map_err(|e| e.to_string())?;
+            self.history.record(before);
+            self.history_handled = true;
+            self.doc.model.base = base.clone();
+            self.state.workspace = Workspace::Model;
+            Ok(format!("Imported the model {} ({} triangles)", base.name(), mesh.triangles.len()))
+        });
+        self.message = Some(match result {
+            Ok(text) => (text, false),
+            Err(e) => (e, true),
+        });
     }
 
     /// Imports an SVG exemplar from `path` for the vector brush; on failure
@@ -179,10 +232,27 @@ impl TraceryApp {
     }
 
     fn export_ids(&self) -> Vec<u64> {
-        match (self.state.export_selected_only, self.selected) {
-            (true, Some(id)) => vec![id],
-            _ => self.doc.curves.iter().map(|c| c.id).collect(),
+        match self.state.workspace {
+            Workspace::Canvas => match (self.state.export_selected_only, self.selected) {
+                (true, Some(id)) => vec![id],
+                _ => self.doc.curves.iter().map(|c| c.id).collect(),
+            },
+            Workspace::Model => match (self.state.export_selected_only, self.selected_surface) {
+                (true, Some(id)) => vec![id],
+                _ => self.doc.model.curves.iter().filter(|c| c.surface.points_mm.len() >= 2).map(|c| c.id).collect(),
+            },
         }
+    }
+
+    /// Whether the model workspace's export would hold the model more than
+    /// once: each embossed or carved curve's product is the whole model.
+    fn model_exported_twice(&self, ids: &[u64]) -> bool {
+        let whole = ids
+            .iter()
+            .filter_map(|id| self.doc.model.curve(*id))
+            .filter(|c| c.surface.output != tracery_core::surface::SurfaceOutput::Pattern)
+            .count();
+        self.state.workspace == Workspace::Model && whole > 0 && ids.len() > 1
     }
 
     /// The finished products of the curves to export, with each curve's id
@@ -192,11 +262,23 @@ impl TraceryApp {
         if ids.is_empty() {
             return Err("Nothing to export: draw a curve first".into());
         }
+        if self.model_exported_twice(&ids) {
+            return Err("An embossed or carved curve is the whole model: export it alone (tick \"Export the selected curve only\")".into());
+        }
         ids.iter()
-            .map(|id| match (self.worker.is_stale(*id), self.worker.state(*id)) {
-                (false, Some(JobState::Done(Ok(product)))) => Ok((*id, product.as_ref())),
-                (true, _) => Err("A pattern is still being synthesized; export when the status bar says done".into()),
-                _ => Err("A curve has no pattern (see the status bar); fix or delete it before exporting".into()),
+            .map(|&id| {
+                // Finished: the product, or `None` when the job failed.
+                let (stale, finished) = match self.state.workspace {
+                    Workspace::Canvas => (self.worker.is_stale(id), done(self.worker.state(id))),
+                    Workspace::Model => (self.surface_worker.is_stale(id), done(self.surface_worker.state(id))),
+                };
+                match (stale, finished) {
+                    (false, Some(Some(product))) => Ok((id, product)),
+                    (true, _) => {
+                        Err("A pattern is still being synthesized; export when the status bar says done".into())
+                    }
+                    _ => Err("A curve has no pattern (see the status bar); fix or delete it before exporting".into()),
+                }
             })
             .collect()
     }

@@ -9,6 +9,8 @@ pub enum FileKind {
     ImportSvg,
     /// A PNG exemplar (with transparency) to import.
     ImportPng,
+    /// A 3D model (STL or OBJ) to draw on.
+    ImportModel,
     /// A project to open.
     OpenProject,
     /// Where to save the project.
@@ -37,6 +39,9 @@ impl Dialogs for SystemDialogs {
         match kind {
             FileKind::ImportSvg => dialog.add_filter("SVG", &["svg"]).set_title("Import an exemplar").pick_file(),
             FileKind::ImportPng => dialog.add_filter("PNG", &["png"]).set_title("Import a raster exemplar").pick_file(),
+            FileKind::ImportModel => {
+                dialog.add_filter("3D model", &["stl", "obj"]).set_title("Import a model to draw on").pick_file()
+            }
             FileKind::OpenProject => dialog.add_filter("Tracery project", &["ron"]).pick_file(),
             FileKind::SaveProject => {
                 dialog.add_filter("Tracery project", &["ron"]).set_file_name("pattern.ron").save_file()

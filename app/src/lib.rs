@@ -13,6 +13,7 @@ pub mod dialogs;
 pub mod document;
 mod files;
 pub mod live;
+pub mod model;
 pub mod modes;
 pub mod panels;
 pub mod solutions;

@@ -13,10 +13,14 @@ use tracery_core::export::SvgOptions;
 use tracery_core::geom::{Region, fill_triangles};
 use tracery_core::product::Texture;
 use tracery_core::raster_brush::RasterExemplar;
+use tracery_core::surface::SurfaceMesh;
 use tracery_core::vector_brush::{Exemplar, SlicingMode};
 
 use crate::canvas::View;
-use crate::document::{AvoidStroke, CurveItem, Document, DocumentError, ExemplarRef, ModeSettings, avoided_region};
+use crate::document::{
+    AvoidStroke, BaseRef, CurveItem, Document, DocumentError, ExemplarRef, ModeSettings, ModelScene, SurfaceCurveItem,
+    avoided_region,
+};
 use crate::tools::Tool;
 use crate::view3d::{Orbit, ViewMesh};
 
@@ -52,6 +56,12 @@ pub struct Persisted {
     pub svg: SvgOptions,
     /// The 3D preview's camera.
     pub orbit: Orbit,
+    /// Which workspace the window shows: the canvas or the model.
+    pub workspace: Workspace,
+    /// The model workspace's camera.
+    pub model_orbit: Orbit,
+    /// The settings new curves on the model take.
+    pub new_surface_curve: SurfaceCurveItem,
     /// The project file, once saved or opened.
     pub project_path: Option<PathBuf>,
 }
@@ -73,9 +83,30 @@ impl Default for Persisted {
             export_folder: default_export_folder(),
             svg: SvgOptions::default(),
             orbit: Orbit::default(),
+            workspace: Workspace::Canvas,
+            model_orbit: Orbit::default(),
+            new_surface_curve: SurfaceCurveItem::default(),
             project_path: None,
         }
     }
+}
+
+/// What the window's middle shows.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize, Deserialize)]
+pub enum Workspace {
+    /// The flat canvas: curves drawn with the brushes.
+    #[default]
+    Canvas,
+    /// A 3D model: curves picked on its surface.
+    Model,
+}
+
+/// A model loaded for drawing and picking.
+pub struct LoadedModel {
+    /// The surface, with its BVH for picking.
+    pub surface: Arc<SurfaceMesh>,
+    /// Its triangles for the 3D view.
+    pub view: Arc<ViewMesh>,
 }
 
 /// Width of the avoidance brush until the person changes it, mm.
@@ -120,6 +151,9 @@ pub struct Caches {
     /// Products' meshes as the 3D view draws them, by the product's address
     /// (kept alive here, so an address is not reused while its entry exists).
     view_meshes: HashMap<usize, (Arc<Product>, Arc<ViewMesh>)>,
+    /// Models by reference, or why they did not load (kept, so a broken
+    /// model is not read again every frame).
+    models: HashMap<BaseRef, Result<Arc<LoadedModel>, String>>,
 }
 
 /// The avoided area and its triangles, and the strokes they were made from.
@@ -201,8 +235,23 @@ impl Caches {
         &self.avoided
     }
 
+    /// The model a base reference names, loaded once.
+    pub fn model(&mut self, scene: &ModelScene, base: &BaseRef) -> Result<Arc<LoadedModel>, String> {
+        self.models
+            .entry(base.clone())
+            .or_insert_with(|| {
+                let mesh = scene.base_mesh(base).map_err(|e| e.to_string())?;
+                let surface = SurfaceMesh::new(mesh).map_err(|e| format!("{}: {e}", base.name()))?;
+                // Drawn as the surface has it (after any repair), so picks land where they show.
+                let view = Arc::new(ViewMesh::new(surface.mesh()));
+                Ok(Arc::new(LoadedModel { surface: Arc::new(surface), view }))
+            })
+            .clone()
+    }
+
     /// Forgets imported exemplars (the document changed under them).
     pub fn forget_imported(&mut self) {
+        self.models.retain(|r, _| matches!(r, BaseRef::Builtin(_)));
         self.exemplars.retain(|r, _| matches!(r, ExemplarRef::Builtin(_)));
         self.raster_exemplars.retain(|r, _| matches!(r, ExemplarRef::Builtin(_)));
         self.pictures.retain(|(r, _), _| matches!(r, ExemplarRef::Builtin(_)));

@@ -1,4 +1,5 @@
 //! Helpers for driving the app in tests.
+#![allow(dead_code)]
 
 use std::time::{Duration, Instant};
 
@@ -13,6 +14,28 @@ pub fn settle(harness: &mut Harness<'static, TraceryApp>) {
         harness.step();
         let app = harness.state();
         let done = !app.busy() && app.doc.curves.iter().all(|c| matches!(app.job_state(c.id), Some(JobState::Done(_))));
+        if done || Instant::now() > deadline {
+            break;
+        }
+        std::thread::sleep(Duration::from_millis(20));
+    }
+    harness.step();
+}
+
+/// Steps until the curves on the model are done.
+pub fn settle_model(harness: &mut Harness<'static, TraceryApp>) {
+    let deadline = Instant::now() + Duration::from_secs(120);
+    loop {
+        harness.step();
+        let app = harness.state();
+        let done = !app.busy()
+            && app
+                .doc
+                .model
+                .curves
+                .iter()
+                .filter(|c| c.surface.points_mm.len() >= 2)
+                .all(|c| matches!(app.surface_job_state(c.id), Some(JobState::Done(_))));
         if done || Instant::now() > deadline {
             break;
         }

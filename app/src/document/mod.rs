@@ -5,9 +5,11 @@
 
 mod history;
 pub mod legacy;
+mod model;
 mod raster;
 
 pub use history::History;
+pub use model::{BaseRef, ImportedModel, ModelScene, SurfaceCurveItem};
 pub use raster::{AvoidStroke, DEFAULT_RASTER_EXEMPLAR, ImportedRaster, RasterBrushItem, avoided_region};
 
 use serde::{Deserialize, Serialize};
@@ -199,6 +201,9 @@ pub enum DocumentError {
     /// An exemplar did not load.
     #[error("{0}")]
     Exemplar(String),
+    /// A model did not load.
+    #[error("{0}")]
+    Model(String),
 }
 
 /// A Tracery project.
@@ -219,6 +224,8 @@ pub struct Document {
     pub next_id: u64,
     /// The printer the patterns are made for (absent in older projects: the defaults).
     pub print: PrintSettings,
+    /// The model workspace: a 3D model and curves drawn on it (absent in older projects).
+    pub model: ModelScene,
 }
 
 impl Default for Document {
@@ -231,6 +238,7 @@ impl Default for Document {
             avoid: Vec::new(),
             next_id: 0,
             print: PrintSettings::default(),
+            model: ModelScene::default(),
         }
     }
 }
@@ -268,6 +276,17 @@ impl Document {
         self.next_id += 1;
         let points = points.iter().map(|p| [p.x, p.y]).collect();
         self.curves.push(CurveItem { id, points, closed, mode, jump_rings: JumpRings::default() });
+        id
+    }
+
+    /// Adds a curve on the model with `template`'s settings and no points
+    /// yet; returns its id.
+    pub fn add_surface_curve(&mut self, template: &SurfaceCurveItem) -> u64 {
+        let id = self.next_id;
+        self.next_id += 1;
+        let mut surface = template.surface.clone();
+        surface.points_mm.clear();
+        self.model.curves.push(SurfaceCurveItem { id, surface, ..template.clone() });
         id
     }
 

@@ -15,5 +15,5 @@ pub fn preview_panel_ui(app: &mut crate::TraceryApp, ui: &mut egui::Ui) {
     let products: Vec<_> = ids.iter().filter_map(|id| app.worker.output(*id)).cloned().collect();
     let draws: Vec<Draw> =
         products.iter().filter_map(|p| app.caches.view_mesh(p)).map(|mesh| Draw { mesh, rgba: PATTERN_RGBA }).collect();
-    view_3d_ui(ui, "preview", app.gpu_format, &draws, &[], &mut app.state.orbit);
+    view_3d_ui(ui, "preview", app.gpu_format, &draws, None, &mut app.state.orbit);
 }

@@ -16,6 +16,11 @@ const PROGRESS_WIDTH: f32 = 160.0;
 /// The status bar, about the selected curve (or the last one drawn).
 pub fn status_ui(app: &mut TraceryApp, ui: &mut egui::Ui) {
     ui.horizontal(|ui| {
+        if app.state.workspace == crate::state::Workspace::Model {
+            crate::model::model_status_ui(app, ui);
+            show_message(app, ui);
+            return;
+        }
         let focus = app.selected.or_else(|| app.doc.curves.last().map(|c| c.id));
         match focus.and_then(|id| app.worker.state(id).map(|s| (id, s))) {
             Some((id, JobState::Running { progress })) => {
@@ -49,10 +54,14 @@ pub fn status_ui(app: &mut TraceryApp, ui: &mut egui::Ui) {
                 });
             }
         }
-        if let Some((text, error)) = &app.message {
-            ui.separator();
-            let color = if *error { ERROR } else { ui.visuals().text_color() };
-            ui.label(RichText::new(text).color(color));
-        }
+        show_message(app, ui);
     });
+}
+
+fn show_message(app: &TraceryApp, ui: &mut egui::Ui) {
+    if let Some((text, error)) = &app.message {
+        ui.separator();
+        let color = if *error { ERROR } else { ui.visuals().text_color() };
+        ui.label(RichText::new(text).color(color));
+    }
 }

@@ -10,23 +10,12 @@ pub mod gpu;
 mod painter;
 pub mod view_mesh;
 
-use egui::{Color32, Sense};
+use egui::Sense;
 use glam::{Vec2, Vec3};
 
 pub use camera::{Camera, Orbit};
 pub use gpu::{Draw, Frame3d, Renderer3d, View3dCallback};
 pub use view_mesh::{Bounds, ViewMesh};
-
-/// A point marked over the view (picked points, say).
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Marker {
-    /// Where, mm.
-    pub at_mm: Vec3,
-    /// Its colour.
-    pub color: Color32,
-    /// Its radius, points.
-    pub radius: f32,
-}
 
 /// What the view gives back.
 pub struct View3dOutput {
@@ -38,21 +27,32 @@ pub struct View3dOutput {
     pub clicked_ray: Option<(Vec3, Vec3)>,
 }
 
+impl View3dOutput {
+    /// Where a point (mm) is drawn on the screen, for marks over the view.
+    pub fn to_screen(&self, p_mm: Vec3) -> egui::Pos2 {
+        let rect = self.response.rect;
+        let n = self.camera.project(p_mm);
+        egui::pos2(rect.center().x + n.x * rect.width() / 2.0, rect.center().y - n.y * rect.height() / 2.0)
+    }
+}
+
 /// Draws `draws` and lets the person orbit (drag), pan (right or middle
 /// drag, or shift and drag) and zoom (scroll); a double-click frames the
 /// scene again. `target_format` is egui's wgpu target, or `None` to paint
-/// without wgpu.
+/// without wgpu. The camera frames `frame_bounds`, or all of `draws`.
 pub fn view_3d_ui(
     ui: &mut egui::Ui,
     id_salt: &str,
     target_format: Option<eframe::wgpu::TextureFormat>,
     draws: &[Draw],
-    markers: &[Marker],
+    frame_bounds: Option<Bounds>,
     orbit: &mut Orbit,
 ) -> View3dOutput {
     let size = ui.available_size().max(egui::vec2(200.0, 200.0));
     let (rect, response) = ui.allocate_exact_size(size, Sense::click_and_drag());
-    let bounds = draws.iter().fold(Bounds::EMPTY, |b, d| b.union(&d.mesh.bounds));
+    // Named for screen readers (and for tests that find the view).
+    response.widget_info(|| egui::WidgetInfo::labeled(egui::Role::Canvas, true, "3D view"));
+    let bounds = frame_bounds.unwrap_or_else(|| draws.iter().fold(Bounds::EMPTY, |b, d| b.union(&d.mesh.bounds)));
     let aspect = rect.width() / rect.height().max(1.0);
     let camera = orbit.camera(&bounds, aspect);
     let delta = Vec2::new(response.drag_delta().x, response.drag_delta().y);
@@ -114,13 +114,6 @@ pub fn view_3d_ui(
                 note = "too many triangles to paint without wgpu: part of the scene is shown";
             }
         }
-    }
-    let to_screen = |p: Vec3| {
-        let n = camera.project(p);
-        egui::pos2(rect.center().x + n.x * rect.width() / 2.0, rect.center().y - n.y * rect.height() / 2.0)
-    };
-    for m in markers {
-        painter.circle(to_screen(m.at_mm), m.radius, m.color, egui::Stroke::new(1.0, Color32::BLACK));
     }
     painter.text(
         rect.left_bottom() + egui::vec2(6.0, -6.0),

@@ -1,0 +1,126 @@
+//! The model workspace's part of the document: the 3D model patterns are
+//! drawn on (a built-in base or an imported mesh, embedded), and the curves
+//! picked on its surface, each with the vector brush's settings and the
+//! surface's ([`SurfaceSettings`], the struct `tracery surface` uses).
+
+use base64::Engine as _;
+use serde::{Deserialize, Serialize};
+use tracery_core::export::write_stl;
+use tracery_core::mesh::{Mesh, read_stl};
+use tracery_core::surface::{BASE_NAMES, SurfaceSettings, builtin_base};
+use tracery_core::vector_brush;
+
+use super::{DocumentError, ExemplarRef, file_stem, unique_name};
+
+/// The model a curve is drawn on.
+#[derive(Clone, Debug, PartialEq, Eq, Hash, Serialize, Deserialize)]
+pub enum BaseRef {
+    /// A built-in base, by name (see `tracery list --bases`).
+    Builtin(String),
+    /// An imported model, by its name in [`ModelScene::imported`].
+    Imported(String),
+}
+
+impl BaseRef {
+    /// The name shown to people.
+    pub fn name(&self) -> &str {
+        match self {
+            BaseRef::Builtin(n) | BaseRef::Imported(n) => n,
+        }
+    }
+}
+
+impl Default for BaseRef {
+    fn default() -> Self {
+        BaseRef::Builtin("vase".into())
+    }
+}
+
+/// An imported model, embedded as a binary STL so that the project opens anywhere.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct ImportedModel {
+    /// Name (from the file name), unique among imported models.
+    pub name: String,
+    /// The mesh as binary STL, base64.
+    pub stl_base64: String,
+}
+
+/// A curve picked on the model's surface, and how its pattern is made.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(default)]
+pub struct SurfaceCurveItem {
+    /// Stable id (for results and selection), shared with the canvas's curves.
+    pub id: u64,
+    /// The exemplar.
+    pub exemplar: ExemplarRef,
+    /// The vector brush's settings.
+    pub settings: vector_brush::Settings,
+    /// The picked points, whether the curve closes, twist and what is made.
+    pub surface: SurfaceSettings,
+}
+
+impl Default for SurfaceCurveItem {
+    fn default() -> Self {
+        SurfaceCurveItem {
+            id: 0,
+            exemplar: ExemplarRef::Builtin("chain".into()),
+            settings: vector_brush::Settings::default(),
+            surface: SurfaceSettings::default(),
+        }
+    }
+}
+
+/// The model workspace: a model and the curves drawn on it.
+#[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize)]
+#[serde(default)]
+pub struct ModelScene {
+    /// The model the curves lie on.
+    pub base: BaseRef,
+    /// Imported models.
+    pub imported: Vec<ImportedModel>,
+    /// Curves on the model, in drawing order.
+    pub curves: Vec<SurfaceCurveItem>,
+}
+
+impl ModelScene {
+    /// The mesh a base reference names.
+    pub fn base_mesh(&self, base: &BaseRef) -> Result<Mesh, DocumentError> {
+        match base {
+            BaseRef::Builtin(name) => builtin_base(name).ok_or_else(|| {
+                DocumentError::Model(format!("no built-in model '{name}' (built-ins: {})", BASE_NAMES.join(", ")))
+            }),
+            BaseRef::Imported(name) => {
+                let model = self
+                    .imported
+                    .iter()
+                    .find(|m| &m.name == name)
+                    .ok_or_else(|| DocumentError::Model(format!("the imported model '{name}' is missing")))?;
+                let bytes = base64::engine::general_purpose::STANDARD
+                    .decode(&model.stl_base64)
+                    .map_err(|e| DocumentError::Model(format!("the imported model '{name}' is damaged: {e}")))?;
+                read_stl(&bytes, name).map_err(|e| DocumentError::Model(e.to_string()))
+            }
+        }
+    }
+
+    /// Embeds a model read from `file_name`; returns its reference.
+    pub fn import(&mut self, file_name: &str, mesh: &Mesh) -> Result<BaseRef, DocumentError> {
+        let mut bytes = Vec::new();
+        write_stl(mesh, &mut bytes).map_err(|e| DocumentError::Model(e.to_string()))?;
+        let base = file_stem(file_name);
+        let name = unique_name(&base, |n| self.imported.iter().any(|m| m.name == n) || BASE_NAMES.contains(&n));
+        let stl_base64 = base64::engine::general_purpose::STANDARD.encode(bytes);
+        self.imported.push(ImportedModel { name: name.clone(), stl_base64 });
+        Ok(BaseRef::Imported(name))
+    }
+
+    /// The curve with `id`.
+    pub fn curve(&self, id: u64) -> Option<&SurfaceCurveItem> {
+        self.curves.iter().find(|c| c.id == id)
+    }
+
+    /// The curve with `id`, mutable.
+    pub fn curve_mut(&mut self, id: u64) -> Option<&mut SurfaceCurveItem> {
+        self.curves.iter_mut().find(|c| c.id == id)
+    }
+}

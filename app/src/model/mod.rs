@@ -1,0 +1,11 @@
+//! The model workspace: a 3D model in the 3D view, curves picked on its
+//! surface by clicking, and the vector brush's pattern along each, made as
+//! a shell on the surface, embossed on the model or carved out of it.
+
+mod job;
+mod panel;
+mod view;
+
+pub use job::SurfaceJob;
+pub use panel::{model_panel_ui, model_status_ui};
+pub use view::model_view_ui;

@@ -1,0 +1,174 @@
+//! The model workspace's side panel (the model, the curves on it, and the
+//! selected curve's settings) and its status line.
+
+use egui::{Color32, RichText};
+use tracery_core::surface::{BASE_NAMES, SurfaceOutput};
+
+use crate::TraceryApp;
+use crate::command::Command;
+use crate::document::{BaseRef, ModeSettings, SurfaceCurveItem, VectorBrushItem};
+use crate::modes::vector_brush::VectorBrushUi;
+use crate::modes::{ModeEnv, ModeUi};
+use crate::worker::JobState;
+
+/// The side panel of the model workspace.
+pub fn model_panel_ui(app: &mut TraceryApp, ui: &mut egui::Ui) {
+    ui.label(RichText::new("Model").strong());
+    let mut base = app.doc.model.base.clone();
+    ui.horizontal(|ui| {
+        let label = ui.label("Shape");
+        let combo =
+            egui::ComboBox::from_id_salt("model base").selected_text(base.name().to_string()).show_ui(ui, |ui| {
+                for name in BASE_NAMES {
+                    ui.selectable_value(&mut base, BaseRef::Builtin(name.to_string()), name);
+                }
+                for m in &app.doc.model.imported {
+                    ui.selectable_value(&mut base, BaseRef::Imported(m.name.clone()), &m.name);
+                }
+            });
+        combo.response.labelled_by(label.id);
+        if Command::ImportModel.button(ui, true) {
+            app.queue(Command::ImportModel);
+        }
+    });
+    if base != app.doc.model.base {
+        // Curves keep their points: they snap onto the new model.
+        app.doc.model.base = base;
+    }
+    ui.separator();
+    ui.label(RichText::new("Curves on the model").strong());
+    let mut clicked = None;
+    for item in &app.doc.model.curves {
+        let n = item.surface.points_mm.len();
+        let text = format!("Curve {} — {n} point{}", item.id, if n == 1 { "" } else { "s" });
+        if ui.selectable_label(app.selected_surface == Some(item.id), text).clicked() {
+            clicked = Some(item.id);
+        }
+    }
+    if let Some(id) = clicked {
+        app.selected_surface = Some(id);
+    }
+    ui.horizontal(|ui| {
+        if ui.button("New curve").on_hover_text("The next click on the model starts a new curve").clicked() {
+            app.selected_surface = None;
+        }
+        let selected = app.selected_surface;
+        let has_points =
+            selected.and_then(|id| app.doc.model.curve(id)).is_some_and(|c| !c.surface.points_mm.is_empty());
+        if ui.add_enabled(has_points, egui::Button::new("Remove last point")).clicked()
+            && let Some(item) = selected.and_then(|id| app.doc.model.curve_mut(id))
+        {
+            item.surface.points_mm.pop();
+        }
+        if Command::Delete.button(ui, selected.is_some()) {
+            app.queue(Command::Delete);
+        }
+    });
+    ui.label(
+        RichText::new(match app.selected_surface {
+            Some(id) => format!("Click on the model to add points to Curve {id}"),
+            None => "Click on the model to start a curve".to_string(),
+        })
+        .weak(),
+    );
+    ui.separator();
+    let mut item = match app.selected_surface.and_then(|id| app.doc.model.curve(id)) {
+        Some(item) => item.clone(),
+        None => app.state.new_surface_curve.clone(),
+    };
+    ui.label(
+        RichText::new(match app.selected_surface {
+            Some(id) => format!("Curve {id}"),
+            None => "New curves".to_string(),
+        })
+        .strong(),
+    );
+    surface_settings_ui(ui, &mut item);
+    // The exemplar and pattern controls are the vector brush's own.
+    let mut mode =
+        ModeSettings::VectorBrush(VectorBrushItem { exemplar: item.exemplar.clone(), settings: item.settings.clone() });
+    let mut commands = Vec::new();
+    let mut env = ModeEnv { doc: &app.doc, caches: &mut app.caches, commands: &mut commands };
+    VectorBrushUi.settings_ui(ui, &mut mode, &mut env);
+    if let ModeSettings::VectorBrush(v) = mode {
+        item.exemplar = v.exemplar;
+        item.settings = v.settings;
+    }
+    // "Another one" picks the next alternative of a canvas curve; here it
+    // is the seed that changes the pattern.
+    for command in commands {
+        match command {
+            Command::AnotherOne => item.settings.seed = item.settings.seed.wrapping_add(1),
+            other => app.queue(other),
+        }
+    }
+    match app.selected_surface.and_then(|id| app.doc.model.curve_mut(id)) {
+        Some(stored) if *stored != item => *stored = item,
+        Some(_) => {}
+        None if app.state.new_surface_curve != item => app.state.new_surface_curve = item,
+        None => {}
+    }
+}
+
+/// What is made, and how the band lies on the surface.
+fn surface_settings_ui(ui: &mut egui::Ui, item: &mut SurfaceCurveItem) {
+    let s = &mut item.surface;
+    ui.checkbox(&mut s.closed, "Closed curve (a ring back to the first point)");
+    ui.horizontal(|ui| {
+        let label = ui.label("Make");
+        ui.selectable_value(&mut s.output, SurfaceOutput::Pattern, "pattern")
+            .on_hover_text("The pattern alone, a shell lying on the model")
+            .labelled_by(label.id);
+        ui.selectable_value(&mut s.output, SurfaceOutput::Emboss, "emboss")
+            .on_hover_text("The pattern united with the model into one solid");
+        ui.selectable_value(&mut s.output, SurfaceOutput::Carve, "carve")
+            .on_hover_text("The pattern cut out of the model hollowed to a shell");
+    });
+    if s.output == SurfaceOutput::Carve {
+        ui.add(egui::Slider::new(&mut s.wall_mm, 0.8..=6.0).text("Wall (mm)"));
+    }
+    ui.add(egui::Slider::new(&mut s.twist_deg, -90.0..=90.0).text("Twist (°)"))
+        .on_hover_text("Turns the band about the curve; 0 lies on the surface");
+}
+
+/// The status line of the model workspace, about the selected curve (or the last one).
+pub fn model_status_ui(app: &TraceryApp, ui: &mut egui::Ui) {
+    let focus = app.selected_surface.or_else(|| app.doc.model.curves.last().map(|c| c.id));
+    let Some(item) = focus.and_then(|id| app.doc.model.curve(id)) else {
+        ui.label(format!(
+            "Click on the {} to pick the points of a curve; the pattern follows it",
+            app.doc.model.base.name()
+        ));
+        return;
+    };
+    let id = item.id;
+    if item.surface.points_mm.len() < 2 {
+        ui.label(format!("Curve {id}: pick at least two points on the model"));
+        return;
+    }
+    match app.surface_worker.state(id) {
+        Some(JobState::Running { progress }) => {
+            ui.add(egui::ProgressBar::new(*progress).desired_width(160.0).show_percentage());
+            ui.label(format!("Synthesizing curve {id} on the model…"));
+        }
+        Some(JobState::Done(Ok(product))) => {
+            let t = &product.topology;
+            let triangles = product.mesh_mm.as_ref().map_or(0, |m| m.triangles.len());
+            ui.label(format!(
+                "Curve {id}: {} component(s), {} hole(s), {triangles} triangles — {:.0} ms",
+                t.components,
+                t.holes,
+                product.timings.total_ms()
+            ));
+            for w in &product.warnings {
+                ui.label(RichText::new(format!("Warning: {w}")).color(Color32::from_rgb(200, 140, 0)));
+            }
+        }
+        Some(JobState::Done(Err(e))) => {
+            ui.label(RichText::new(format!("Curve {id}: {e}")).color(Color32::from_rgb(220, 60, 60)));
+        }
+        _ => {
+            ui.label("Ready");
+        }
+    }
+}

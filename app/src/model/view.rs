@@ -1,0 +1,97 @@
+//! The model workspace's middle: the model and the patterns on it; a click
+//! on the model adds a point to the selected curve (or starts one).
+
+use egui::Color32;
+use glam::DVec3;
+use tracery_core::surface::{SurfaceMesh, SurfaceOutput};
+
+use crate::TraceryApp;
+use crate::panels::preview_3d::PATTERN_RGBA;
+use crate::view3d::{Draw, View3dOutput, view_3d_ui};
+
+/// The model's colour (sRGB).
+const MODEL_RGBA: [f32; 4] = [0.62, 0.64, 0.68, 1.0];
+/// The selected curve's pattern (sRGB).
+const SELECTED_RGBA: [f32; 4] = [0.95, 0.62, 0.25, 1.0];
+
+/// Radius of a picked point's mark, points.
+const MARK_RADIUS: f32 = 4.0;
+
+/// The selected curve's picked points over the view, joined in order; those
+/// the model hides are drawn faint.
+fn points_ui(ui: &egui::Ui, out: &View3dOutput, surface: &SurfaceMesh, points_mm: &[[f64; 3]]) {
+    let painter = ui.painter_at(out.response.rect);
+    let eye = out.camera.eye_mm.as_dvec3();
+    let marks: Vec<(egui::Pos2, bool)> = points_mm
+        .iter()
+        .map(|p| {
+            let p = DVec3::from(*p);
+            let to_point = p - eye;
+            // Hidden when the model is hit before the point (a hair's
+            // tolerance, since the point lies on the model).
+            let hidden = surface
+                .ray_hit(eye, to_point.normalize())
+                .is_some_and(|hit| hit.position_mm.distance(eye) < to_point.length() - 1e-3 * surface.size_mm());
+            (out.to_screen(p.as_vec3()), hidden)
+        })
+        .collect();
+    let line = egui::Stroke::new(1.0, Color32::from_rgba_unmultiplied(90, 150, 240, 140));
+    for pair in marks.windows(2) {
+        painter.line_segment([pair[0].0, pair[1].0], line);
+    }
+    for (k, (at, hidden)) in marks.iter().enumerate() {
+        // The first point is green: a closed curve returns to it.
+        let color = if k == 0 { Color32::from_rgb(80, 200, 120) } else { Color32::from_rgb(90, 150, 240) };
+        let (color, outline) =
+            if *hidden { (color.gamma_multiply(0.3), Color32::TRANSPARENT) } else { (color, Color32::BLACK) };
+        painter.circle(*at, MARK_RADIUS, color, egui::Stroke::new(1.0, outline));
+    }
+}
+
+/// The 3D view of the model workspace.
+pub fn model_view_ui(app: &mut TraceryApp, ui: &mut egui::Ui) {
+    let base = app.doc.model.base.clone();
+    let model = match app.caches.model(&app.doc.model, &base) {
+        Ok(model) => model,
+        Err(e) => {
+            ui.centered_and_justified(|ui| ui.colored_label(Color32::from_rgb(220, 60, 60), e));
+            return;
+        }
+    };
+    let mut draws = Vec::new();
+    // An embossed or carved product holds the model itself: the model is
+    // then not drawn again under it.
+    let mut model_in_a_product = false;
+    for item in &app.doc.model.curves {
+        let Some(product) = app.surface_worker.output(item.id).cloned() else { continue };
+        let Some(mesh) = app.caches.view_mesh(&product) else { continue };
+        model_in_a_product |= item.surface.output != SurfaceOutput::Pattern;
+        let rgba = if app.selected_surface == Some(item.id) { SELECTED_RGBA } else { PATTERN_RGBA };
+        draws.push(Draw { mesh, rgba });
+    }
+    if !model_in_a_product {
+        draws.insert(0, Draw { mesh: model.view.clone(), rgba: MODEL_RGBA });
+    }
+    let out = view_3d_ui(ui, "model", app.gpu_format, &draws, Some(model.view.bounds), &mut app.state.model_orbit);
+    let points = app.selected_surface.and_then(|id| app.doc.model.curve(id)).map(|c| c.surface.points_mm.clone());
+    points_ui(ui, &out, &model.surface, &points.unwrap_or_default());
+    let Some((origin, direction)) = out.clicked_ray else { return };
+    let Some(hit) = model.surface.ray_hit(origin.as_dvec3(), direction.as_dvec3()) else {
+        app.message = Some(("Click on the model to add a point".into(), false));
+        return;
+    };
+    let id = match app.selected_surface.filter(|id| app.doc.model.curve(*id).is_some()) {
+        Some(id) => id,
+        None => {
+            let id = app.doc.add_surface_curve(&app.state.new_surface_curve);
+            app.selected_surface = Some(id);
+            id
+        }
+    };
+    if let Some(item) = app.doc.model.curve_mut(id) {
+        item.surface.points_mm.push(hit.position_mm.to_array());
+        let n = item.surface.points_mm.len();
+        let hint = if n < 2 { "; click again for the next point" } else { "" };
+        app.message = Some((format!("Curve {id}: point {n} picked{hint}"), false));
+    }
+}

@@ -1,0 +1,79 @@
+//! The model workspace, driven as a person would: points clicked on a
+//! built-in vase become a curve on its surface, the pattern follows it,
+//! undo takes a point back, and the export is a sound solid.
+
+use egui::Pos2;
+use egui_kittest::Harness;
+use egui_kittest::kittest::Queryable;
+use tracery::TraceryApp;
+use tracery::dialogs::FileKind;
+use tracery::worker::JobState;
+use tracery_core::surface::{SurfaceMesh, builtin_base};
+
+#[path = "common/distance.rs"]
+mod distance;
+#[path = "common/drive.rs"]
+mod drive;
+#[path = "common/stl.rs"]
+mod stl;
+#[path = "common/ui.rs"]
+mod ui;
+use drive::{click_in_side_panel, harness, press};
+use ui::settle_model;
+
+fn click(harness: &mut Harness<'static, TraceryApp>, at: Pos2) {
+    harness.hover_at(at);
+    harness.step();
+    press(harness, at, true);
+    harness.step();
+    press(harness, at, false);
+    harness.step();
+}
+
+#[test]
+fn points_clicked_on_the_vase_carry_a_pattern_that_exports_as_one_solid() {
+    let path = std::env::temp_dir().join(format!("tracery-model-{}.stl", std::process::id()));
+    let _ = std::fs::remove_file(&path);
+    let mut harness = harness(vec![(FileKind::ExportStl, path.clone())]);
+    harness.step();
+    harness.get_by_label("3D model").click();
+    harness.run_steps(2);
+    // Across the front of the vase, in the middle of the view.
+    let centre = harness.get_by_label("3D view").rect().center();
+    for dx in [-60.0, 0.0, 60.0] {
+        click(&mut harness, centre + egui::vec2(dx, 10.0));
+    }
+    let app = harness.state();
+    assert_eq!(app.doc.model.curves.len(), 1, "the clicks start one curve: {:?}", app.message);
+    let item = app.doc.model.curves[0].clone();
+    assert_eq!(item.surface.points_mm.len(), 3, "every click on the vase picks a point");
+    // Each picked point lies on the vase, by a brute-force distance to its triangles.
+    let vase = builtin_base("vase").unwrap();
+    let size_mm = SurfaceMesh::new(vase.clone()).unwrap().size_mm();
+    for p in &item.surface.points_mm {
+        let d = distance::to_mesh(&vase.vertices, &vase.triangles, *p);
+        assert!(d < 1e-6 * size_mm, "a picked point is {d} mm off the vase");
+    }
+    settle_model(&mut harness);
+    let app = harness.state();
+    let product = match app.surface_job_state(item.id) {
+        Some(JobState::Done(Ok(p))) => p.clone(),
+        other => panic!("no pattern on the vase: {:?}", other.map(|s| matches!(s, JobState::Running { .. }))),
+    };
+    let mesh = product.mesh_mm.as_ref().expect("a pattern on a surface is a solid");
+    assert_eq!(mesh.shell_count(), product.topology.components, "the counted topology is the solid's");
+    assert_eq!(product.topology.components, 1, "the default target is one piece");
+
+    // Undo takes the last point back.
+    harness.key_press_modifiers(egui::Modifiers::COMMAND, egui::Key::Z);
+    harness.run_steps(2);
+    assert_eq!(harness.state().doc.model.curves[0].surface.points_mm.len(), 2, "undo removes the last point");
+    settle_model(&mut harness);
+
+    click_in_side_panel(&mut harness, "Export STL…");
+    assert!(path.exists(), "no STL written: {:?}", harness.state().message);
+    let check = stl::check_stl(&path);
+    assert_eq!((check.open_edges, check.misoriented_edges), (0, 0), "{check:?}");
+    assert_eq!(check.shells, 1, "{check:?}");
+    let _ = std::fs::remove_file(&path);
+}
