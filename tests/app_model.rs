@@ -2,6 +2,8 @@
 //! built-in vase become a curve on its surface, the pattern follows it,
 //! undo takes a point back, and the export is a sound solid.
 
+use std::time::{Duration, Instant};
+
 use egui::Pos2;
 use egui_kittest::Harness;
 use egui_kittest::kittest::Queryable;
@@ -76,4 +78,28 @@ fn points_clicked_on_the_vase_carry_a_pattern_that_exports_as_one_solid() {
     assert_eq!((check.open_edges, check.misoriented_edges), (0, 0), "{check:?}");
     assert_eq!(check.shells, 1, "{check:?}");
     let _ = std::fs::remove_file(&path);
+}
+
+#[test]
+fn curves_on_the_model_come_back_after_a_restart() {
+    let dir = std::env::temp_dir().join(format!("tracery-autosave-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    let path = dir.join("autosave.ron");
+    let mut first = TraceryApp::with(Box::new(tracery::dialogs::ScriptedDialogs::default()), Some(path.clone()));
+    let template = tracery::document::SurfaceCurveItem::default();
+    let id = first.doc.add_surface_curve(&template);
+    first.doc.model.curve_mut(id).unwrap().surface.points_mm = vec![[30.0, 0.0, 25.0], [0.0, 30.0, 25.0]];
+    // The autosave runs on the frame loop, at most every two seconds.
+    let mut harness = Harness::builder().with_size(egui::vec2(1280.0, 800.0)).build_eframe(move |_| first);
+    let deadline = Instant::now() + Duration::from_secs(10);
+    while !path.exists() && Instant::now() < deadline {
+        harness.step();
+        std::thread::sleep(Duration::from_millis(100));
+    }
+    assert!(path.exists(), "the model's curve was never autosaved");
+    let mut second = TraceryApp::with(Box::new(tracery::dialogs::ScriptedDialogs::default()), Some(path));
+    second.restore_autosave();
+    assert_eq!(second.doc.model.curves.len(), 1, "a drawing only on the model is restored: {:?}", second.message);
+    assert_eq!(second.doc.model.curves[0].surface.points_mm.len(), 2);
+    let _ = std::fs::remove_dir_all(&dir);
 }

@@ -375,13 +375,14 @@ impl TraceryApp {
         }
     }
 
-    /// Restores the last session's document, if it had curves.
-    pub(crate) fn restore_autosave(&mut self) {
+    /// Restores the last session's document, if anything was drawn in it (on the canvas or on the model).
+    pub fn restore_autosave(&mut self) {
         let Some(path) = &self.autosave.path else { return };
         let Ok(text) = std::fs::read_to_string(path) else { return };
         match Document::from_ron(&text) {
-            Ok(doc) if !doc.curves.is_empty() => {
-                self.message = Some((format!("Restored your last session ({} curves)", doc.curves.len()), false));
+            Ok(doc) if doc.has_drawing() => {
+                let curves = doc.curves.len() + doc.model.curves.len();
+                self.message = Some((format!("Restored your last session ({curves} curves)"), false));
                 self.autosave.saved = doc.clone();
                 self.doc = doc;
             }

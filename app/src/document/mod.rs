@@ -290,6 +290,12 @@ impl Document {
         id
     }
 
+    /// Whether anything was drawn or imported that a person would miss:
+    /// curves on the canvas or on the model, or an imported model.
+    pub fn has_drawing(&self) -> bool {
+        !self.curves.is_empty() || !self.model.curves.is_empty() || !self.model.imported.is_empty()
+    }
+
     /// The curve with `id`.
     pub fn curve(&self, id: u64) -> Option<&CurveItem> {
         self.curves.iter().find(|c| c.id == id)

@@ -11,6 +11,8 @@ use crate::view3d::{Draw, View3dOutput, view_3d_ui};
 
 /// The model's colour (sRGB).
 const MODEL_RGBA: [f32; 4] = [0.62, 0.64, 0.68, 1.0];
+/// The model made with the selected curve, embossed or carved (sRGB).
+const SELECTED_MODEL_RGBA: [f32; 4] = [0.80, 0.72, 0.62, 1.0];
 /// The selected curve's pattern (sRGB).
 const SELECTED_RGBA: [f32; 4] = [0.95, 0.62, 0.25, 1.0];
 
@@ -65,8 +67,17 @@ pub fn model_view_ui(app: &mut TraceryApp, ui: &mut egui::Ui) {
     for item in &app.doc.model.curves {
         let Some(product) = app.surface_worker.output(item.id).cloned() else { continue };
         let Some(mesh) = app.caches.view_mesh(&product) else { continue };
-        model_in_a_product |= item.surface.output != SurfaceOutput::Pattern;
-        let rgba = if app.selected_surface == Some(item.id) { SELECTED_RGBA } else { PATTERN_RGBA };
+        let whole_model = item.surface.output != SurfaceOutput::Pattern;
+        model_in_a_product |= whole_model;
+        let selected = app.selected_surface == Some(item.id);
+        // An embossed or carved product is the model: coloured as the
+        // model (warmer when selected), its relief shows in the shading.
+        let rgba = match (whole_model, selected) {
+            (true, true) => SELECTED_MODEL_RGBA,
+            (true, false) => MODEL_RGBA,
+            (false, true) => SELECTED_RGBA,
+            (false, false) => PATTERN_RGBA,
+        };
         draws.push(Draw { mesh, rgba });
     }
     if !model_in_a_product {
