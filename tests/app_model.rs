@@ -103,3 +103,19 @@ fn curves_on_the_model_come_back_after_a_restart() {
     assert_eq!(second.doc.model.curves[0].surface.points_mm.len(), 2);
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+#[test]
+fn a_broken_model_is_refused_with_its_reason_and_changes_nothing() {
+    let path = std::env::temp_dir().join(format!("tracery-broken-{}.stl", std::process::id()));
+    std::fs::write(&path, b"solid nothing\nfacet normal 0 0\n").unwrap();
+    let mut harness = harness(vec![(FileKind::ImportModel, path.clone())]);
+    harness.step();
+    let before = harness.state().doc.clone();
+    harness.state_mut().queue(tracery::command::Command::ImportModel);
+    harness.run_steps(2);
+    let app = harness.state();
+    assert_eq!(app.doc, before, "a refused model leaves the document as it was");
+    let (text, error) = app.message.clone().expect("the refusal is shown");
+    assert!(error && text.contains("tracery-broken"), "the message names the file: {text}");
+    let _ = std::fs::remove_file(&path);
+}
