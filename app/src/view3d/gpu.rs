@@ -98,7 +98,6 @@ struct GpuMesh {
     source: Arc<ViewMesh>,
     vertices: wgpu::Buffer,
     indices: wgpu::Buffer,
-    index_count: u32,
     last_frame: u64,
 }
 
@@ -350,13 +349,7 @@ impl Renderer3d {
             contents: bytemuck::cast_slice(&mesh.indices),
             usage: wgpu::BufferUsages::INDEX,
         });
-        self.meshes.push(GpuMesh {
-            source: mesh.clone(),
-            vertices,
-            indices,
-            index_count: mesh.indices.len() as u32,
-            last_frame: self.frame,
-        });
+        self.meshes.push(GpuMesh { source: mesh.clone(), vertices, indices, last_frame: self.frame });
         self.meshes.len() - 1
     }
 
@@ -374,15 +367,16 @@ impl Renderer3d {
             let targets = self.targets(device, size_px);
             self.views.insert(frame.view_id, targets);
         }
-        let drawn: Vec<usize> =
-            frame.draws.iter().filter(|d| !d.mesh.indices.is_empty()).map(|d| self.upload(device, &d.mesh)).collect();
+        // Empty meshes are skipped: a zero-sized buffer cannot be bound.
+        let visible: Vec<&Draw> = frame.draws.iter().filter(|d| !d.mesh.indices.is_empty()).collect();
+        let drawn: Vec<usize> = visible.iter().map(|d| self.upload(device, &d.mesh)).collect();
         let now = self.frame;
         let Some(targets) = self.views.get_mut(&frame.view_id) else { return };
         queue.write_buffer(&targets.globals, 0, &globals_bytes(frame));
-        if targets.colors_capacity < frame.draws.len() {
-            (targets.colors, targets.colors_capacity) = color_buffer(device, frame.draws.len());
+        if targets.colors_capacity < visible.len() {
+            (targets.colors, targets.colors_capacity) = color_buffer(device, visible.len());
         }
-        let colors: Vec<f32> = frame.draws.iter().filter(|d| !d.mesh.indices.is_empty()).flat_map(|d| d.rgba).collect();
+        let colors: Vec<f32> = visible.iter().flat_map(|d| d.rgba).collect();
         if !colors.is_empty() {
             queue.write_buffer(&targets.colors, 0, bytemuck::cast_slice(&colors));
         }
@@ -420,7 +414,7 @@ impl Renderer3d {
             let mesh = &self.meshes[i];
             pass.set_vertex_buffer(0, mesh.vertices.slice(..));
             pass.set_index_buffer(mesh.indices.slice(..), wgpu::IndexFormat::Uint32);
-            pass.draw_indexed(0..mesh.index_count, 0, k as u32..k as u32 + 1);
+            pass.draw_indexed(0..mesh.source.indices.len() as u32, 0, k as u32..k as u32 + 1);
         }
         drop(pass);
         self.meshes.retain(|m| now - m.last_frame < FORGET_AFTER_FRAMES);
