@@ -119,3 +119,37 @@ fn a_broken_model_is_refused_with_its_reason_and_changes_nothing() {
     assert!(error && text.contains("tracery-broken"), "the message names the file: {text}");
     let _ = std::fs::remove_file(&path);
 }
+
+#[test]
+fn a_model_that_is_not_a_surface_is_refused_and_its_name_stays_free() {
+    use tracery_core::export::write_stl;
+    use tracery_core::mesh::Mesh;
+    let path = std::env::temp_dir().join(format!("tracery-fan-{}.stl", std::process::id()));
+    // Three triangles on one edge: a valid STL, but not a surface.
+    let fan = Mesh {
+        vertices: vec![[0.0, 0.0, 0.0], [10.0, 0.0, 0.0], [5.0, 8.0, 0.0], [5.0, -8.0, 0.0], [5.0, 0.0, 8.0]],
+        triangles: vec![[0, 1, 2], [1, 0, 3], [0, 1, 4]],
+    };
+    let write = |mesh: &Mesh| {
+        let mut bytes = Vec::new();
+        write_stl(mesh, &mut bytes).unwrap();
+        std::fs::write(&path, bytes).unwrap();
+    };
+    write(&fan);
+    let mut harness = harness(vec![(FileKind::ImportModel, path.clone()), (FileKind::ImportModel, path.clone())]);
+    harness.step();
+    let before = harness.state().doc.clone();
+    harness.state_mut().queue(tracery::command::Command::ImportModel);
+    harness.run_steps(2);
+    let (text, error) = harness.state().message.clone().expect("the refusal is shown");
+    assert!(error && text.contains("not a surface"), "the message gives the reason: {text}");
+    assert_eq!(harness.state().doc, before, "a refused model leaves the document as it was");
+    // The same file, mended, imports under the same name.
+    write(&builtin_base("egg").unwrap());
+    harness.state_mut().queue(tracery::command::Command::ImportModel);
+    harness.run_steps(2);
+    let (text, error) = harness.state().message.clone().expect("the import is reported");
+    assert!(!error, "the mended model imports: {text}");
+    assert_eq!(harness.state().doc.model.imported.len(), 1);
+    let _ = std::fs::remove_file(&path);
+}

@@ -17,7 +17,6 @@ use crate::state::Workspace;
 use crate::worker::JobState;
 use tracery_core::Product;
 use tracery_core::mesh::read_mesh_file;
-use tracery_core::surface::SurfaceMesh;
 
 /// A finished job's product (`Some(None)` when it failed), or `None` while unfinished.
 fn done<E>(state: Option<&JobState<Product, E>>) -> Option<Option<&Product>> {
@@ -128,10 +127,16 @@ impl TraceryApp {
     /// document is left as it was.
     pub fn import_model(&mut self, path: &Path) {
         let result = read_mesh_file(path).map_err(|e| e.to_string()).and_then(|mesh| {
-            SurfaceMesh::new(mesh.clone()).map_err(|e| format!("{}: {e}", path.display()))?;
             let name = path.file_name().map_or_else(|| "model".into(), |n| n.to_string_lossy().into_owned());
             let before = self.doc.clone();
             let base = self.doc.model.import(&name, &mesh).map_err(|e| e.to_string())?;
+            // Checked as the workspace loads it (from the embedded copy), once:
+            // the loaded model stays in the cache for drawing and picking.
+            if let Err(e) = self.caches.model(&self.doc.model, &base) {
+                self.caches.forget_model(&base);
+                self.doc = before;
+                return Err(format!("{} was not imported: {e}", path.display()));
+            }
             self.history.record(before);
             self.history_handled = true;
             self.doc.model.base = base.clone();

@@ -249,6 +249,11 @@ impl Caches {
             .clone()
     }
 
+    /// Forgets a model (it was refused, and its name may be given to another).
+    pub fn forget_model(&mut self, base: &BaseRef) {
+        self.models.remove(base);
+    }
+
     /// Forgets imported exemplars (the document changed under them).
     pub fn forget_imported(&mut self) {
         self.models.retain(|r, _| matches!(r, BaseRef::Builtin(_)));
