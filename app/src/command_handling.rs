@@ -252,12 +252,12 @@ impl TraceryApp {
     /// Whether the model workspace's export would hold the model more than
     /// once: each embossed or carved curve's product is the whole model.
     fn model_exported_twice(&self, ids: &[u64]) -> bool {
-        let whole = ids
-            .iter()
-            .filter_map(|id| self.doc.model.curve(*id))
-            .filter(|c| c.surface.output != tracery_core::surface::SurfaceOutput::Pattern)
-            .count();
-        self.state.workspace == Workspace::Model && whole > 0 && ids.len() > 1
+        self.state.workspace == Workspace::Model
+            && ids.len() > 1
+            && ids
+                .iter()
+                .filter_map(|id| self.doc.model.curve(*id))
+                .any(|c| c.surface.output != tracery_core::surface::SurfaceOutput::Pattern)
     }
 
     /// The finished products of the curves to export, with each curve's id

@@ -1,7 +1,7 @@
 //! The model workspace's side panel (the model, the curves on it, and the
 //! selected curve's settings) and its status line.
 
-use egui::{Color32, RichText};
+use egui::RichText;
 use tracery_core::surface::{BASE_NAMES, SurfaceOutput};
 
 use crate::TraceryApp;
@@ -9,7 +9,7 @@ use crate::command::Command;
 use crate::document::{BaseRef, ModeSettings, SurfaceCurveItem, VectorBrushItem};
 use crate::modes::vector_brush::VectorBrushUi;
 use crate::modes::{ModeEnv, ModeUi};
-use crate::worker::JobState;
+use crate::panels::status::job_state_ui;
 
 /// The side panel of the model workspace.
 pub fn model_panel_ui(app: &mut TraceryApp, ui: &mut egui::Ui) {
@@ -146,29 +146,13 @@ pub fn model_status_ui(app: &TraceryApp, ui: &mut egui::Ui) {
         ui.label(format!("Curve {id}: pick at least two points on the model"));
         return;
     }
-    match app.surface_worker.state(id) {
-        Some(JobState::Running { progress }) => {
-            ui.add(egui::ProgressBar::new(*progress).desired_width(160.0).show_percentage());
-            ui.label(format!("Synthesizing curve {id} on the model…"));
-        }
-        Some(JobState::Done(Ok(product))) => {
-            let t = &product.topology;
-            let triangles = product.mesh_mm.as_ref().map_or(0, |m| m.triangles.len());
-            ui.label(format!(
-                "Curve {id}: {} component(s), {} hole(s), {triangles} triangles — {:.0} ms",
-                t.components,
-                t.holes,
-                product.timings.total_ms()
-            ));
-            for w in &product.warnings {
-                ui.label(RichText::new(format!("Warning: {w}")).color(Color32::from_rgb(200, 140, 0)));
-            }
-        }
-        Some(JobState::Done(Err(e))) => {
-            ui.label(RichText::new(format!("Curve {id}: {e}")).color(Color32::from_rgb(220, 60, 60)));
-        }
-        _ => {
-            ui.label("Ready");
-        }
+    let running = format!("Synthesizing curve {id} on the model…");
+    let shown = job_state_ui(ui, id, app.surface_worker.state(id), &running, |product| {
+        let t = &product.topology;
+        let triangles = product.mesh_mm.as_ref().map_or(0, |m| m.triangles.len());
+        format!("{} component(s), {} hole(s), {triangles} triangles", t.components, t.holes)
+    });
+    if !shown {
+        ui.label("Ready");
     }
 }

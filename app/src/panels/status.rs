@@ -3,6 +3,8 @@
 
 use egui::{Color32, RichText};
 
+use tracery_core::Product;
+
 use crate::TraceryApp;
 use crate::worker::JobState;
 
@@ -22,40 +24,54 @@ pub fn status_ui(app: &mut TraceryApp, ui: &mut egui::Ui) {
             return;
         }
         let focus = app.selected.or_else(|| app.doc.curves.last().map(|c| c.id));
-        match focus.and_then(|id| app.worker.state(id).map(|s| (id, s))) {
-            Some((id, JobState::Running { progress })) => {
-                ui.add(egui::ProgressBar::new(*progress).desired_width(PROGRESS_WIDTH).show_percentage());
-                ui.label(format!("Synthesizing curve {id}…"));
-            }
-            Some((id, JobState::Done(Ok(product)))) => {
+        let shown = focus.is_some_and(|id| {
+            job_state_ui(ui, id, app.worker.state(id), &format!("Synthesizing curve {id}…"), |product| {
                 let t = &product.topology;
                 let openings =
                     if t.loop_openings > 0 { format!(" + {} loop opening", t.loop_openings) } else { String::new() };
                 let rings = if t.jump_rings > 0 { format!(" + {} jump ring", t.jump_rings) } else { String::new() };
                 let pieces = product.facts.count("pieces").map_or(String::new(), |n| format!(", {n} pieces"));
-                ui.label(format!(
-                    "Curve {id}: {} component(s), {} hole(s){openings}{rings}{pieces} — {:.0} ms",
-                    t.components,
-                    t.holes,
-                    product.timings.total_ms()
-                ));
-                for w in &product.warnings {
-                    ui.label(RichText::new(format!("Warning: {w}")).color(WARNING));
-                }
-            }
-            Some((id, JobState::Done(Err(e)))) => {
-                ui.label(RichText::new(format!("Curve {id}: {e}")).color(ERROR));
-            }
-            _ => {
-                ui.label(if app.doc.curves.is_empty() {
-                    "Draw a curve on the canvas: drag with the left button. End near the start to close a loop."
-                } else {
-                    "Ready"
-                });
-            }
+                format!("{} component(s), {} hole(s){openings}{rings}{pieces}", t.components, t.holes)
+            })
+        });
+        if !shown {
+            ui.label(if app.doc.curves.is_empty() {
+                "Draw a curve on the canvas: drag with the left button. End near the start to close a loop."
+            } else {
+                "Ready"
+            });
         }
         show_message(app, ui);
     });
+}
+
+/// Where curve `id`'s job stands: a progress bar and `running` while it
+/// runs; when done, `summary` of the product with its time and warnings, or
+/// the error. Returns whether there was anything to show.
+pub(crate) fn job_state_ui<E: std::fmt::Display>(
+    ui: &mut egui::Ui,
+    id: u64,
+    state: Option<&JobState<Product, E>>,
+    running: &str,
+    summary: impl Fn(&Product) -> String,
+) -> bool {
+    match state {
+        Some(JobState::Running { progress }) => {
+            ui.add(egui::ProgressBar::new(*progress).desired_width(PROGRESS_WIDTH).show_percentage());
+            ui.label(running);
+        }
+        Some(JobState::Done(Ok(product))) => {
+            ui.label(format!("Curve {id}: {} — {:.0} ms", summary(product), product.timings.total_ms()));
+            for w in &product.warnings {
+                ui.label(RichText::new(format!("Warning: {w}")).color(WARNING));
+            }
+        }
+        Some(JobState::Done(Err(e))) => {
+            ui.label(RichText::new(format!("Curve {id}: {e}")).color(ERROR));
+        }
+        Some(JobState::Idle) | None => return false,
+    }
+    true
 }
 
 fn show_message(app: &TraceryApp, ui: &mut egui::Ui) {
