@@ -167,6 +167,44 @@ fn an_embossed_ring_and_the_vase_are_one_watertight_body() {
 }
 
 #[test]
+fn two_embossed_rings_are_one_body_holding_the_vase_once() {
+    let dir = tempdir("surface-two");
+    let ring = |z: f64| format!("30,0,{z};0,30,{z};-30,0,{z};0,-30,{z}");
+    let (low, high) = (ring(18.0), ring(32.0));
+    let common = ["--exemplar", "chain", "--mesh", "vase", "--closed", "--band", "7", "--mode", "emboss"];
+    let read = |p: &std::path::Path| tracery_core::mesh::read_stl(&std::fs::read(p).unwrap(), "test").unwrap();
+    let made = |name: &str, curves: &[&str]| {
+        let stl = dir.join(format!("{name}.stl"));
+        let mut args: Vec<String> = common.iter().map(|s| s.to_string()).collect();
+        for points in curves {
+            args.extend(["--points".to_string(), points.to_string()]);
+        }
+        args.extend(["--stl".to_string(), stl.display().to_string()]);
+        let args: Vec<&str> = args.iter().map(String::as_str).collect();
+        let json = report_of("surface", &args, &dir.join(format!("{name}.json")));
+        (stl, json)
+    };
+    let (both, json) = made("both", &[&low, &high]);
+    let check = check_stl(&both);
+    assert_eq!((check.open_edges, check.misoriented_edges), (0, 0), "{check:?}");
+    assert_eq!(check.shells, 1, "{check:?} {json}");
+    assert_eq!(check.euler, 2, "{check:?} {json}");
+    assert_eq!(field(&json, "curves"), "2", "{json}");
+    // The vase once, and each ring's relief on it: the volume of both rings
+    // embossed is that of each embossed alone, less the vase counted twice.
+    let vase = SurfaceMesh::new(builtin_base("vase").unwrap()).unwrap().mesh().signed_volume();
+    let alone: Vec<f64> = [("low", &low), ("high", &high)]
+        .iter()
+        .map(|(name, points)| read(&made(name, &[points.as_str()]).0).signed_volume() - vase)
+        .collect();
+    assert!(alone.iter().all(|&relief| relief > 100.0), "{alone:?}");
+    let relief = read(&both).signed_volume() - vase;
+    // The second ring gets the next seed, so its chain differs a little from the one made alone.
+    let expected = alone[0] + alone[1];
+    assert!((relief - expected).abs() < 0.1 * expected, "both: {relief:.0} mm³ of relief, alone: {alone:?}");
+}
+
+#[test]
 fn a_pattern_without_holes_carved_out_of_the_egg_leaves_one_open_shell() {
     let dir = tempdir("surface-carve");
     let args = ["--exemplar", "vine", "--mesh", "egg", "--points", "21,0,20;15,-15,30;0,-19,40", "--band", "8"];

@@ -116,6 +116,14 @@ pub enum Warning {
         /// Bodies left.
         bodies: usize,
     },
+    /// Carved patterns asked for different walls: the model is hollowed
+    /// once, to the thickest, and thinner cuts may not reach through it.
+    CarveWallsDiffer {
+        /// The shell's wall, mm.
+        shell_mm: f64,
+        /// The thinnest wall asked, mm.
+        thinnest_mm: f64,
+    },
 }
 
 impl std::fmt::Display for Warning {
@@ -184,6 +192,10 @@ impl std::fmt::Display for Warning {
             Warning::CarvedApart { bodies } => write!(
                 f,
                 "carving the pattern out leaves the shell in {bodies} separate pieces: each hole of the pattern cuts one loose, and a ring all round the model cuts it in two; for one piece, carve a pattern with no holes (--holes 0) along an open curve"
+            ),
+            Warning::CarveWallsDiffer { shell_mm, thinnest_mm } => write!(
+                f,
+                "the carved patterns ask for walls from {thinnest_mm:.1} to {shell_mm:.1} mm: the model was hollowed once, to {shell_mm:.1} mm, so cuts made for a thinner wall may not reach through it; give every carved curve the same wall"
             ),
         }
     }

@@ -11,7 +11,7 @@ use tracery_core::control::Control;
 use tracery_core::mesh::{Mesh, read_mesh_file};
 use tracery_core::print::check_solid;
 use tracery_core::surface::{BASE_NAMES, SurfaceMesh, SurfaceOutput, SurfaceSettings, builtin_base};
-use tracery_core::vector_brush::make_on_surface;
+use tracery_core::vector_brush::make_object_on_surface;
 
 use super::output::{OutputArgs, write_outputs};
 use super::synth::{BrushArgs, load_exemplar};
@@ -39,9 +39,11 @@ pub struct SurfaceArgs {
     #[arg(long)]
     pub mesh: String,
     /// Points of the curve, mm, as "x,y,z;x,y,z;..."; points off the surface snap onto it.
-    #[arg(long)]
-    pub points: String,
-    /// Close the curve back to the first point (a ring around a vase).
+    /// Give it again for each further curve: all are made with the same
+    /// flags and combined with the model once, into one object.
+    #[arg(long, required = true)]
+    pub points: Vec<String>,
+    /// Close each curve back to its first point (a ring around a vase).
     #[arg(long)]
     pub closed: bool,
     /// Turn the band about the curve, degrees [default: 0, lying on the surface].
@@ -60,10 +62,14 @@ pub struct SurfaceArgs {
 }
 
 impl SurfaceArgs {
-    /// The curve these flags ask for.
-    pub fn surface_settings(&self) -> Result<SurfaceSettings> {
+    /// The curves these flags ask for, one for each `--points`.
+    pub fn surface_settings(&self) -> Result<Vec<SurfaceSettings>> {
+        self.points.iter().map(|points| self.curve(points)).collect()
+    }
+
+    fn curve(&self, points: &str) -> Result<SurfaceSettings> {
         let mut s = SurfaceSettings::default();
-        s.points_mm = SurfaceSettings::parse_points(&self.points)?;
+        s.points_mm = SurfaceSettings::parse_points(points)?;
         s.closed = self.closed;
         s.twist_deg = self.twist.unwrap_or(s.twist_deg);
         s.output = match self.mode {
@@ -93,13 +99,13 @@ pub fn run(args: SurfaceArgs) -> Result<()> {
     args.output.refuse_planar_only("surface", "curve from --points on --mesh", "surfaces")?;
     let settings = args.brush.settings();
     settings.validate()?;
-    let drawn = args.surface_settings()?;
+    let curves = args.surface_settings()?;
     args.output.svg_options()?;
     let print = args.output.print.settings()?;
     let surface = SurfaceMesh::new(load_base(&args.mesh)?)?;
     let exemplar = load_exemplar(&args.exemplar)?;
-    let product = make_on_surface(&exemplar, &surface, &drawn, &settings, &Control::default())?;
+    let product = make_object_on_surface(&exemplar, &surface, &curves, &settings, &Control::default())?;
     let product = check_solid(product, &print, settings.thickness_mm);
-    let spec = format!("{}:{}{}", args.mesh, args.points, if drawn.closed { " closed" } else { "" });
+    let spec = format!("{}:{}{}", args.mesh, args.points.join(" | "), if args.closed { " closed" } else { "" });
     write_outputs("surface", &exemplar.name, &spec, &args.output, &product)
 }

@@ -9,7 +9,10 @@
 //!   ([`trace`], drawn in a [`SplineDomain`]), smooth frames along it ([`Frames`]), all in [`draw_on`];
 //!   then a band made along it laid on the surface ([`lay_band`]), and for
 //!   carving, the model hollowed to a shell ([`hollow`]).
+//! - Several such solids combined with the model once ([`assemble`]): a
+//!   multi-curve lamp in one body.
 
+mod assembly;
 mod band;
 mod bases;
 mod chart;
@@ -22,6 +25,7 @@ mod sheet;
 mod surface_mesh;
 mod trace;
 
+pub use assembly::{Assembly, AssemblyError, Part, PartRole, assemble};
 pub use band::{BandOnSurface, Sheet, lay_band};
 pub use bases::{BASE_NAMES, builtin_base};
 pub use chart::{Chart, ChartError, MIN_POINTS};

@@ -45,7 +45,7 @@ pub use error::{ExemplarError, SliceError, SolveError, Unmet};
 pub use exemplar::{Exemplar, LoadOptions};
 pub use growing::Growing;
 pub use matching::{BREAK_COST, MATCH_WEIGHT, PairCost};
-pub use on_surface::{SurfaceSynthesisError, make_on_surface};
+pub use on_surface::{SurfaceSynthesisError, make_band_on_surface, make_object_on_surface, make_on_surface, part_role};
 pub use piece::{Piece, PieceSet};
 pub use pipeline::{Synthesis, SynthesisError, synthesize, synthesize_alternatives, synthesize_rectangle};
 pub use portal::{Portal, portals_at};

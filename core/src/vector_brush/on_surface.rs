@@ -4,17 +4,19 @@
 //! long as the curve, and that pattern laid on the surface along the
 //! curve's band ([`crate::surface::lay_band`]) as a printable shell.
 
+use glam::DVec2;
+
 use super::{Exemplar, InvalidSetting, Settings, SynthesisError, synthesize};
 use crate::Product;
 use crate::control::{Control, MaybeCancelled};
 use crate::curve::Curve;
 use crate::geom::fill_triangles;
-use crate::mesh::{BooleanError, MeshError, difference_solids, union_solids};
+use crate::mesh::MeshError;
 use crate::product::{Fact, Facts};
-use crate::report::{Timings, Warning};
+use crate::report::Timings;
 use crate::surface::{
-    BandOnSurface, DrawnError, EMBOSS_SINK_MM, HollowError, Sheet, SurfaceMesh, SurfaceOutput, SurfaceSettings,
-    draw_on, hollow, lay_band,
+    AssemblyError, BandOnSurface, DrawnError, EMBOSS_SINK_MM, Part, PartRole, Sheet, SurfaceMesh, SurfaceOutput,
+    SurfaceSettings, assemble, draw_on, lay_band,
 };
 
 /// Why a pattern could not be put on a surface.
@@ -35,10 +37,7 @@ pub enum SurfaceSynthesisError {
     Mesh(#[from] MeshError),
     /// The pattern could not be united with the model, or cut out of it.
     #[error(transparent)]
-    Boolean(#[from] BooleanError),
-    /// The model could not be hollowed for carving.
-    #[error(transparent)]
-    Hollow(#[from] HollowError),
+    Assembly(#[from] AssemblyError),
 }
 
 impl MaybeCancelled for SurfaceSynthesisError {
@@ -47,27 +46,26 @@ impl MaybeCancelled for SurfaceSynthesisError {
     }
 }
 
+/// What an embossed or carved curve's band does to its model.
+pub fn part_role(drawn: &SurfaceSettings) -> PartRole {
+    match drawn.output {
+        SurfaceOutput::Emboss => PartRole::Emboss,
+        SurfaceOutput::Carve => PartRole::Carve { wall_mm: drawn.wall_mm },
+        _ => PartRole::Add,
+    }
+}
+
 /// `exemplar` made along the curve `drawn` describes on `surface`, with
-/// every setting of `settings`, as a shell `settings.thickness_mm` thick on
-/// the surface. The product's `mesh_mm` is the shell; its `region_mm` the
-/// pattern as made, flat (along `+x`, or around a circle for a closed curve).
+/// every setting of `settings`, as a band on the surface, before it is
+/// united with the model or cut out of it: lying on the surface
+/// `settings.thickness_mm` thick for a pattern, sunk a little into it for
+/// emboss, and reaching through the wall for carve. Give it to
+/// [`crate::surface::assemble`] with [`part_role`] (as [`make_on_surface`]
+/// does), alone or with the bands of other curves on the same model.
 ///
-/// ```
-/// use tracery_core::control::Control;
-/// use tracery_core::surface::{SurfaceMesh, SurfaceSettings, builtin_base};
-/// use tracery_core::vector_brush::{Settings, builtin, make_on_surface};
-/// let egg = SurfaceMesh::new(builtin_base("egg").unwrap()).unwrap();
-/// let mut drawn = SurfaceSettings::default();
-/// drawn.points_mm = SurfaceSettings::parse_points("30,0,30; 0,30,30; -30,0,30; 0,-30,30").unwrap();
-/// drawn.closed = true;
-/// let mut settings = Settings::default();
-/// settings.band_mm = 8.0;
-/// let product = make_on_surface(&builtin("chain").unwrap(), &egg, &drawn, &settings, &Control::default()).unwrap();
-/// let shell = product.mesh_mm.unwrap();
-/// assert!(shell.sanity_check().is_ok());
-/// assert_eq!(shell.shell_count(), product.topology.components);
-/// ```
-pub fn make_on_surface(
+/// The product's `mesh_mm` is the band; its `region_mm` the pattern as
+/// made, flat (along `+x`, or around a circle for a closed curve).
+pub fn make_band_on_surface(
     exemplar: &Exemplar,
     surface: &SurfaceMesh,
     drawn: &SurfaceSettings,
@@ -100,21 +98,8 @@ pub fn make_on_surface(
         SurfaceOutput::Carve => (drawn.wall_mm + EMBOSS_SINK_MM, EMBOSS_SINK_MM),
         _ => (0.0, settings.thickness_mm),
     };
-    let mut mesh = timings.time("lay on surface", || lay_band(region, sheet, &band, thickness_mm, sink_mm))?;
-    let band_shells = mesh.shell_count();
-    match drawn.output {
-        SurfaceOutput::Emboss => mesh = timings.time("emboss", || union_solids(surface.mesh(), &mesh))?,
-        SurfaceOutput::Carve => {
-            let shell = timings.time("hollow", || hollow(surface, drawn.wall_mm))?;
-            mesh = timings.time("carve", || difference_solids(&shell, &mesh))?;
-        }
-        _ => {}
-    }
-    let shells = if drawn.output == SurfaceOutput::Pattern { band_shells } else { mesh.shell_count() };
+    let mesh = timings.time("lay on surface", || lay_band(region, sheet, &band, thickness_mm, sink_mm))?;
     let mut warnings = on.warnings.clone();
-    if drawn.output == SurfaceOutput::Carve && shells > 1 {
-        warnings.push(Warning::CarvedApart { bodies: shells });
-    }
     warnings.extend(synthesis.warnings.iter().cloned());
     let mut facts = Facts::default();
     facts.push("curve_length_mm", Fact::Number(length_mm));
@@ -129,8 +114,7 @@ pub fn make_on_surface(
     );
     facts.push("pieces", Fact::Count(synthesis.solution.pieces.len()));
     facts.push("thickness_mm", Fact::Number(settings.thickness_mm));
-    facts.push("band_shells", Fact::Count(band_shells));
-    facts.push("shells", Fact::Count(shells));
+    facts.push("band_shells", Fact::Count(mesh.shell_count()));
     Ok(Product {
         fill_mm: fill_triangles(region),
         region_mm: region.clone(),
@@ -141,4 +125,121 @@ pub fn make_on_surface(
         facts,
         ..Product::default()
     })
+}
+
+/// `exemplar` made along the curve `drawn` describes on `surface`, with
+/// every setting of `settings`, made into what `drawn.output` asks: a
+/// shell `settings.thickness_mm` thick on the surface, or that united
+/// with the model, or cut out of the model hollowed. The product's
+/// `mesh_mm` is that solid; its `region_mm` the pattern as made, flat.
+///
+/// ```
+/// use tracery_core::control::Control;
+/// use tracery_core::surface::{SurfaceMesh, SurfaceSettings, builtin_base};
+/// use tracery_core::vector_brush::{Settings, builtin, make_on_surface};
+/// let egg = SurfaceMesh::new(builtin_base("egg").unwrap()).unwrap();
+/// let mut drawn = SurfaceSettings::default();
+/// drawn.points_mm = SurfaceSettings::parse_points("30,0,30; 0,30,30; -30,0,30; 0,-30,30").unwrap();
+/// drawn.closed = true;
+/// let mut settings = Settings::default();
+/// settings.band_mm = 8.0;
+/// let product = make_on_surface(&builtin("chain").unwrap(), &egg, &drawn, &settings, &Control::default()).unwrap();
+/// let shell = product.mesh_mm.unwrap();
+/// assert!(shell.sanity_check().is_ok());
+/// assert_eq!(shell.shell_count(), product.topology.components);
+/// ```
+pub fn make_on_surface(
+    exemplar: &Exemplar,
+    surface: &SurfaceMesh,
+    drawn: &SurfaceSettings,
+    settings: &Settings,
+    control: &Control,
+) -> Result<Product, SurfaceSynthesisError> {
+    let mut product = make_band_on_surface(exemplar, surface, drawn, settings, control)?;
+    let Some(band) = product.mesh_mm.take() else { return Ok(product) };
+    let part = Part { solid_mm: &band, role: part_role(drawn) };
+    let object = assemble(Some(surface), &[part], &mut product.timings)?;
+    product.warnings.extend(object.warnings);
+    product.facts.push("shells", Fact::Count(object.bodies));
+    product.mesh_mm = Some(object.mesh_mm);
+    Ok(product)
+}
+
+/// Room left between the flat patterns of several curves laid one above
+/// the other in a product's `region_mm`, mm: wide enough that no print
+/// check mistakes it for a narrow gap.
+const FLAT_SPACING_MM: f64 = 5.0;
+
+/// Several curves on one model, each made as [`make_band_on_surface`]
+/// does (with the seed moved on by one for each next curve, so that equal
+/// curves differ), combined with the model once by
+/// [`crate::surface::assemble`]: a multi-curve lamp in one object.
+///
+/// The product's `mesh_mm` is the object, and its `region_mm` the flat
+/// patterns laid one above the other, the first at the bottom; its
+/// topology is theirs, summed. The facts give the object's `shells`.
+///
+/// ```
+/// use tracery_core::control::Control;
+/// use tracery_core::surface::{SurfaceMesh, SurfaceOutput, SurfaceSettings, builtin_base};
+/// use tracery_core::vector_brush::{Settings, builtin, make_object_on_surface};
+/// let vase = SurfaceMesh::new(builtin_base("vase").unwrap()).unwrap();
+/// let ring = |z: f64| {
+///     let mut drawn = SurfaceSettings::default();
+///     drawn.points_mm = SurfaceSettings::parse_points(&format!("30,0,{z}; 0,30,{z}; -30,0,{z}; 0,-30,{z}")).unwrap();
+///     drawn.closed = true;
+///     drawn.output = SurfaceOutput::Emboss;
+///     drawn
+/// };
+/// let mut settings = Settings::default();
+/// settings.band_mm = 6.0;
+/// let lamp = make_object_on_surface(&builtin("chain").unwrap(), &vase, &[ring(20.0), ring(35.0)], &settings, &Control::default()).unwrap();
+/// let mesh = lamp.mesh_mm.unwrap();
+/// assert!(mesh.sanity_check().is_ok());
+/// assert_eq!(mesh.shell_count(), 1);
+/// ```
+pub fn make_object_on_surface(
+    exemplar: &Exemplar,
+    surface: &SurfaceMesh,
+    curves: &[SurfaceSettings],
+    settings: &Settings,
+    control: &Control,
+) -> Result<Product, SurfaceSynthesisError> {
+    if let [drawn] = curves {
+        return make_on_surface(exemplar, surface, drawn, settings, control);
+    }
+    let mut product = Product::default();
+    let mut bands = Vec::new();
+    let mut bottom_mm = 0.0;
+    for (k, drawn) in curves.iter().enumerate() {
+        let mut brush = settings.clone();
+        brush.seed = settings.seed.wrapping_add(k as u64);
+        let band = make_band_on_surface(exemplar, surface, drawn, &brush, &control.silent())?;
+        control.report(0.8 * (k + 1) as f32 / curves.len() as f32);
+        if let Some(bounds) = band.region_mm.bounds() {
+            let lift = DVec2::new(0.0, bottom_mm - bounds.min.y);
+            product.region_mm.polygons.extend(band.region_mm.map_points(|p| p + lift).polygons);
+            bottom_mm += bounds.max.y - bounds.min.y + FLAT_SPACING_MM;
+        }
+        product.topology.components += band.topology.components;
+        product.topology.holes += band.topology.holes;
+        product.topology.loop_openings += band.topology.loop_openings;
+        product.timings.absorb(&band.timings);
+        for w in band.warnings {
+            if !product.warnings.contains(&w) {
+                product.warnings.push(w);
+            }
+        }
+        bands.push((band.mesh_mm.unwrap_or_default(), part_role(drawn)));
+    }
+    let parts: Vec<Part> = bands.iter().map(|(mesh, role)| Part { solid_mm: mesh, role: *role }).collect();
+    let object = assemble(Some(surface), &parts, &mut product.timings)?;
+    product.warnings.extend(object.warnings);
+    product.fill_mm = fill_triangles(&product.region_mm);
+    product.facts.push("curves", Fact::Count(curves.len()));
+    product.facts.push("base_triangles", Fact::Count(surface.triangles().len()));
+    product.facts.push("thickness_mm", Fact::Number(settings.thickness_mm));
+    product.facts.push("shells", Fact::Count(object.bodies));
+    product.mesh_mm = Some(object.mesh_mm);
+    Ok(product)
 }

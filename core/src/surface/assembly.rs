@@ -1,0 +1,131 @@
+//! Several solids made on one model combined into one object: the bands
+//! of every curve embossed on it, cut out of it or lying on it, and any
+//! other solid (a lamp shade), so that a multi-curve lamp is one body in
+//! one file, with the model in it once.
+
+use super::{HollowError, SurfaceMesh, hollow};
+use crate::mesh::{BooleanError, Mesh, difference_solids, union_solids};
+use crate::report::{Timings, Warning};
+
+/// What one part does to the object.
+#[derive(Clone, Copy, Debug, PartialEq)]
+#[non_exhaustive]
+pub enum PartRole {
+    /// Added as it is (a pattern lying on the model, a shade): the model
+    /// is not part of the object unless another part needs it.
+    Add,
+    /// Added to the model: the object holds the whole model.
+    Emboss,
+    /// Cut out of the model hollowed to a shell `wall_mm` thick.
+    Carve {
+        /// The shell's wall, mm.
+        wall_mm: f64,
+    },
+}
+
+/// One solid to combine, closed and facing out, in the model's space, mm.
+#[derive(Clone, Copy, Debug)]
+pub struct Part<'a> {
+    /// The solid.
+    pub solid_mm: &'a Mesh,
+    /// What it does.
+    pub role: PartRole,
+}
+
+/// The parts combined.
+#[derive(Clone, Debug, Default)]
+pub struct Assembly {
+    /// The object, closed and facing out, mm.
+    pub mesh_mm: Mesh,
+    /// Its separate bodies (shells): 1 for a lamp that prints as one piece.
+    pub bodies: usize,
+    /// The shell the carved parts were cut from, when any was, mm.
+    pub wall_mm: Option<f64>,
+    /// What the person should know.
+    pub warnings: Vec<Warning>,
+}
+
+/// Why parts could not be combined.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+#[non_exhaustive]
+pub enum AssemblyError {
+    /// Nothing to combine.
+    #[error("there is nothing to combine: make a pattern first")]
+    Empty,
+    /// A part needs the model, and none was given.
+    #[error("an embossed or carved pattern needs the model it was made on")]
+    NoModel,
+    /// The model could not be hollowed for carving.
+    #[error(transparent)]
+    Hollow(#[from] HollowError),
+    /// A boolean failed.
+    #[error(transparent)]
+    Boolean(#[from] BooleanError),
+}
+
+/// Combines `parts` made on `model` into one object.
+///
+/// The object starts empty, or as the whole model when a part is
+/// embossed, or as the model hollowed to the largest wall asked when a
+/// part is carved. Every added and embossed part is then united with it,
+/// and every carved part cut out of it, in that order: a pattern cut out
+/// of the model cuts through whatever was embossed where it runs.
+///
+/// ```
+/// use tracery_core::mesh::{Mesh, extrude};
+/// use tracery_core::geom::{Polygon, Region};
+/// use tracery_core::surface::{Part, PartRole, assemble};
+/// use tracery_core::DVec2;
+/// let square = |x: f64| extrude(&Region::new(vec![Polygon {
+///     outer: vec![DVec2::new(x, 0.0), DVec2::new(x + 2.0, 0.0), DVec2::new(x + 2.0, 2.0), DVec2::new(x, 2.0)],
+///     holes: vec![],
+/// }]), 1.0).unwrap();
+/// let (a, b, c) = (square(0.0), square(1.0), square(5.0));
+/// let parts: Vec<Part> = [&a, &b, &c].iter().map(|m| Part { solid_mm: m, role: PartRole::Add }).collect();
+/// let object = assemble(None, &parts, &mut Default::default()).unwrap();
+/// assert!(object.mesh_mm.sanity_check().is_ok());
+/// assert_eq!(object.bodies, 2);
+/// ```
+pub fn assemble(
+    model: Option<&SurfaceMesh>,
+    parts: &[Part<'_>],
+    timings: &mut Timings,
+) -> Result<Assembly, AssemblyError> {
+    let walls = parts.iter().filter_map(|p| match p.role {
+        PartRole::Carve { wall_mm } => Some(wall_mm),
+        _ => None,
+    });
+    let wall_mm = walls.clone().reduce(f64::max);
+    let embossed = parts.iter().any(|p| p.role == PartRole::Emboss);
+    let mut warnings = Vec::new();
+    let mut object: Option<Mesh> = match (wall_mm, embossed) {
+        (None, false) => None,
+        (Some(wall), _) => {
+            let model = model.ok_or(AssemblyError::NoModel)?;
+            if let Some(thinnest) = walls.clone().reduce(f64::min).filter(|&w| w < wall) {
+                warnings.push(Warning::CarveWallsDiffer { shell_mm: wall, thinnest_mm: thinnest });
+            }
+            Some(timings.time("hollow", || hollow(model, wall))?)
+        }
+        (None, true) => Some(model.ok_or(AssemblyError::NoModel)?.mesh().clone()),
+    };
+    // Added parts first, carved ones last: see the doc comment.
+    let mut order: Vec<&Part> = parts.iter().filter(|p| !matches!(p.role, PartRole::Carve { .. })).collect();
+    order.extend(parts.iter().filter(|p| matches!(p.role, PartRole::Carve { .. })));
+    for part in order {
+        if part.solid_mm.triangles.is_empty() {
+            continue;
+        }
+        object = Some(match (object, part.role) {
+            (None, _) => part.solid_mm.clone(),
+            (Some(o), PartRole::Carve { .. }) => timings.time("carve", || difference_solids(&o, part.solid_mm))?,
+            (Some(o), _) => timings.time("unite", || union_solids(&o, part.solid_mm))?,
+        });
+    }
+    let mesh_mm = object.ok_or(AssemblyError::Empty)?;
+    let bodies = mesh_mm.shell_count();
+    if wall_mm.is_some() && bodies > 1 {
+        warnings.push(Warning::CarvedApart { bodies });
+    }
+    Ok(Assembly { mesh_mm, bodies, wall_mm, warnings })
+}
