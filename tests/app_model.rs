@@ -10,7 +10,7 @@ use egui_kittest::kittest::Queryable;
 use tracery::TraceryApp;
 use tracery::dialogs::FileKind;
 use tracery::worker::JobState;
-use tracery_core::surface::{SurfaceMesh, builtin_base};
+use tracery_core::surface::{SurfaceMesh, SurfaceOutput, builtin_base};
 
 #[path = "common/distance.rs"]
 mod distance;
@@ -18,6 +18,8 @@ mod distance;
 mod drive;
 #[path = "common/stl.rs"]
 mod stl;
+#[path = "common/threemf.rs"]
+mod threemf;
 #[path = "common/ui.rs"]
 mod ui;
 use drive::{click_in_side_panel, harness, press};
@@ -152,4 +154,48 @@ fn a_model_that_is_not_a_surface_is_refused_and_its_name_stays_free() {
     assert!(!error, "the mended model imports: {text}");
     assert_eq!(harness.state().doc.model.imported.len(), 1);
     let _ = std::fs::remove_file(&path);
+}
+
+#[test]
+fn two_embossed_curves_export_as_one_object_holding_the_vase_once() {
+    let dir = std::env::temp_dir().join(format!("tracery-object-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).unwrap();
+    let (stl_path, three_mf) = (dir.join("object.stl"), dir.join("object.3mf"));
+    let mut harness = harness(vec![(FileKind::ExportStl, stl_path.clone()), (FileKind::Export3mf, three_mf.clone())]);
+    harness.step();
+    harness.get_by_label("3D model").click();
+    harness.run_steps(2);
+    let ring = |z: f64| vec![[30.0, 0.0, z], [0.0, 30.0, z], [-30.0, 0.0, z], [0.0, -30.0, z]];
+    let app = harness.state_mut();
+    let template = tracery::document::SurfaceCurveItem::default();
+    for z in [18.0, 32.0] {
+        let id = app.doc.add_surface_curve(&template);
+        let item = app.doc.model.curve_mut(id).unwrap();
+        item.surface.points_mm = ring(z);
+        item.surface.closed = true;
+        item.surface.output = SurfaceOutput::Emboss;
+        item.settings.band_mm = 7.0;
+    }
+    settle_model(&mut harness);
+    click_in_side_panel(&mut harness, "Export STL…");
+    assert!(stl_path.exists(), "no STL written: {:?}", harness.state().message);
+    let check = stl::check_stl(&stl_path);
+    assert_eq!((check.open_edges, check.misoriented_edges), (0, 0), "{check:?}");
+    assert_eq!(check.shells, 1, "both rings and the vase are one body: {check:?}");
+    // The vase is in it once: the object's volume is the vase's and the two
+    // reliefs', far from two vases.
+    let read = |p: &std::path::Path| tracery_core::mesh::read_stl(&std::fs::read(p).unwrap(), "test").unwrap();
+    let vase = SurfaceMesh::new(builtin_base("vase").unwrap()).unwrap().mesh().signed_volume();
+    let relief = read(&stl_path).signed_volume() - vase;
+    assert!(relief > 200.0 && relief < 0.2 * vase, "{relief:.0} mm³ beyond the vase's {vase:.0}");
+    click_in_side_panel(&mut harness, "Export 3MF…");
+    assert!(three_mf.exists(), "no 3MF written: {:?}", harness.state().message);
+    let read = threemf::read_3mf(&std::fs::read(&three_mf).unwrap());
+    assert_eq!(read.objects.len(), 1, "the 3MF holds one object");
+    assert!(threemf::is_closed(&read.objects[0].2), "the 3MF's object is closed");
+    if let Some((manifold, objects)) = threemf::prusa_info(&three_mf) {
+        assert!(manifold && objects == 1, "PrusaSlicer: manifold {manifold}, {objects} object(s)");
+    }
+    let _ = std::fs::remove_dir_all(&dir);
 }

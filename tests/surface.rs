@@ -189,7 +189,7 @@ fn two_embossed_rings_are_one_body_holding_the_vase_once() {
     assert_eq!((check.open_edges, check.misoriented_edges), (0, 0), "{check:?}");
     assert_eq!(check.shells, 1, "{check:?} {json}");
     assert_eq!(check.euler, 2, "{check:?} {json}");
-    assert_eq!(field(&json, "curves"), "2", "{json}");
+    assert_eq!(field(&json, "parts"), "2", "{json}");
     // The vase once, and each ring's relief on it: the volume of both rings
     // embossed is that of each embossed alone, less the vase counted twice.
     let vase = SurfaceMesh::new(builtin_base("vase").unwrap()).unwrap().mesh().signed_volume();

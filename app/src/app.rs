@@ -6,12 +6,13 @@ use std::sync::Arc;
 use std::time::{Duration, Instant};
 
 use tracery_core::DVec2;
+use tracery_core::vector_brush::part_role;
 
 use crate::command::Command;
 use crate::dialogs::{Dialogs, SystemDialogs};
 use crate::document::{Document, History, ModeSettings};
 use crate::live::{LIVE_ID, LiveJob, Session};
-use crate::model::{self, SurfaceJob};
+use crate::model::{self, ASSEMBLY, AssemblyJob, SurfaceJob};
 use crate::modes::{CurveJob, GalleryJob, JobError, mode_ui};
 use crate::panels::{files, gallery, preview_3d, side_panel, status, top_bar};
 use crate::solutions::Solutions;
@@ -58,6 +59,8 @@ pub struct TraceryApp {
     pub(crate) live: Worker<LiveJob>,
     /// Patterns of the curves on the model.
     pub(crate) surface_worker: Worker<SurfaceJob>,
+    /// The object made of them and the model (one slot, [`ASSEMBLY`]).
+    pub(crate) assembly_worker: Worker<AssemblyJob>,
     /// What the stroke being drawn shares between its jobs.
     pub(crate) live_session: Session,
     pub(crate) gesture: Option<Gesture>,
@@ -100,6 +103,7 @@ impl TraceryApp {
             gallery: Worker::default(),
             live: Worker::live(Arc::new(|| {})),
             surface_worker: Worker::default(),
+            assembly_worker: Worker::default(),
             live_session: Session::default(),
             gesture: None,
             dialogs,
@@ -153,6 +157,7 @@ impl TraceryApp {
         self.doc.curves.iter().any(|c| self.worker.is_stale(c.id))
             || self.gallery_curve().is_some_and(|id| self.gallery.is_stale(id))
             || self.doc.model.curves.iter().any(|c| self.surface_worker.is_stale(c.id))
+            || self.assembly_worker.is_stale(ASSEMBLY)
     }
 
     /// The latest finished product of a curve.
@@ -248,6 +253,19 @@ impl TraceryApp {
         self.surface_worker.output(id)
     }
 
+    /// The object made of every curve on the model, when it is up to date
+    /// with all of them.
+    pub fn model_object(&self) -> Option<Arc<tracery_core::Product>> {
+        let curves = self.doc.model.curves.iter().filter(|c| c.surface.points_mm.len() >= 2);
+        if curves.clone().any(|c| self.surface_worker.is_stale(c.id)) || self.assembly_worker.is_stale(ASSEMBLY) {
+            return None;
+        }
+        match self.assembly_worker.state(ASSEMBLY) {
+            Some(JobState::Done(Ok(object))) => Some(object.clone()),
+            _ => None,
+        }
+    }
+
     /// Where the pattern of a curve on the model stands.
     pub fn surface_job_state(
         &self,
@@ -268,6 +286,7 @@ impl TraceryApp {
             self.worker.set_waker(wake.clone());
             self.gallery.set_waker(wake.clone());
             self.surface_worker.set_waker(wake.clone());
+            self.assembly_worker.set_waker(wake.clone());
             self.live.set_waker(wake);
             self.waker_set = true;
         }
@@ -324,7 +343,38 @@ impl TraceryApp {
             }
         }
         self.surface_worker.retain(&ids);
-        self.surface_worker.poll(now)
+        let busy = self.surface_worker.poll(now);
+        self.submit_assembly(now) || busy
+    }
+
+    /// Asks for the object once every curve on the model is done; returns whether it is being made.
+    fn submit_assembly(&mut self, now: Instant) -> bool {
+        let base = self.doc.model.base.clone();
+        // `None` while a curve is being made; a curve that failed is left out
+        // (its error is on the status line, and export refuses until it is fixed).
+        let parts: Option<Vec<_>> = self
+            .doc
+            .model
+            .curves
+            .iter()
+            .filter(|c| c.surface.points_mm.len() >= 2)
+            .map(|item| match self.surface_worker.state(item.id) {
+                _ if self.surface_worker.is_stale(item.id) => None,
+                Some(JobState::Done(Ok(band))) => Some(Some((band.clone(), part_role(&item.surface)))),
+                Some(JobState::Done(Err(_))) => Some(None),
+                _ => None,
+            })
+            .collect::<Option<Vec<_>>>()
+            .map(|parts| parts.into_iter().flatten().collect());
+        match (parts, self.caches.model(&self.doc.model, &base)) {
+            (Some(parts), Ok(model)) if !parts.is_empty() => {
+                self.assembly_worker.want(ASSEMBLY, AssemblyJob { surface: model.surface.clone(), parts }, now);
+            }
+            // Curves still being made keep the last object on screen.
+            (None, Ok(_)) => {}
+            _ => self.assembly_worker.retain(&[]),
+        }
+        self.assembly_worker.poll(now)
     }
 
     /// One undo step per gesture: a drag of a slider or of a point counts once.

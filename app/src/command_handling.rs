@@ -2,6 +2,7 @@
 //! autosave. Every button, menu entry and shortcut ends up in [`run`].
 
 use std::path::Path;
+use std::sync::Arc;
 use std::time::Instant;
 
 use tracery_core::export::{ThreeMfObject, object_colour, write_3mf, write_stl, write_svg};
@@ -13,15 +14,16 @@ use crate::command::Command;
 use crate::dialogs::FileKind;
 use crate::document::{Document, DocumentError, ExemplarRef, ModeSettings, RasterBrushItem, VectorBrushItem};
 use crate::files::write_atomically;
+use crate::model::ASSEMBLY;
 use crate::state::Workspace;
 use crate::worker::JobState;
 use tracery_core::Product;
 use tracery_core::mesh::read_mesh_file;
 
 /// A finished job's product (`Some(None)` when it failed), or `None` while unfinished.
-fn done<E>(state: Option<&JobState<Product, E>>) -> Option<Option<&Product>> {
+fn done<E>(state: Option<&JobState<Product, E>>) -> Option<Option<Arc<Product>>> {
     match state {
-        Some(JobState::Done(Ok(product))) => Some(Some(product.as_ref())),
+        Some(JobState::Done(Ok(product))) => Some(Some(product.clone())),
         Some(JobState::Done(Err(_))) => Some(None),
         _ => None,
     }
@@ -242,35 +244,23 @@ impl TraceryApp {
                 (true, Some(id)) => vec![id],
                 _ => self.doc.curves.iter().map(|c| c.id).collect(),
             },
-            Workspace::Model => match (self.state.export_selected_only, self.selected_surface) {
-                (true, Some(id)) => vec![id],
-                _ => self.doc.model.curves.iter().filter(|c| c.surface.points_mm.len() >= 2).map(|c| c.id).collect(),
-            },
+            // The object on the model is one: every curve is in it.
+            Workspace::Model => {
+                self.doc.model.curves.iter().filter(|c| c.surface.points_mm.len() >= 2).map(|c| c.id).collect()
+            }
         }
     }
 
-    /// Whether the model workspace's export would hold the model more than
-    /// once: each embossed or carved curve's product is the whole model.
-    fn model_exported_twice(&self, ids: &[u64]) -> bool {
-        self.state.workspace == Workspace::Model
-            && ids.len() > 1
-            && ids
-                .iter()
-                .filter_map(|id| self.doc.model.curve(*id))
-                .any(|c| c.surface.output != tracery_core::surface::SurfaceOutput::Pattern)
-    }
-
-    /// The finished products of the curves to export, with each curve's id
-    /// (its name on screen is "Curve ID"), or why they cannot be.
-    fn export_products(&self) -> Result<Vec<(u64, &tracery_core::Product)>, String> {
+    /// The finished products to export, each with its name (a canvas curve
+    /// is "Curve ID"; the model workspace exports its one object), or why
+    /// they cannot be.
+    fn export_products(&self) -> Result<Vec<(String, Arc<Product>)>, String> {
         let ids = self.export_ids();
         if ids.is_empty() {
             return Err("Nothing to export: draw a curve first".into());
         }
-        if self.model_exported_twice(&ids) {
-            return Err("An embossed or carved curve is the whole model: export it alone (tick \"Export the selected curve only\")".into());
-        }
-        ids.iter()
+        let products: Vec<(String, Arc<Product>)> = ids
+            .iter()
             .map(|&id| {
                 // Finished: the product, or `None` when the job failed.
                 let (stale, finished) = match self.state.workspace {
@@ -278,14 +268,24 @@ impl TraceryApp {
                     Workspace::Model => (self.surface_worker.is_stale(id), done(self.surface_worker.state(id))),
                 };
                 match (stale, finished) {
-                    (false, Some(Some(product))) => Ok((id, product)),
+                    (false, Some(Some(product))) => Ok((format!("Curve {id}"), product)),
                     (true, _) => {
                         Err("A pattern is still being synthesized; export when the status bar says done".into())
                     }
                     _ => Err("A curve has no pattern (see the status bar); fix or delete it before exporting".into()),
                 }
             })
-            .collect()
+            .collect::<Result<_, String>>()?;
+        if self.state.workspace == Workspace::Canvas {
+            return Ok(products);
+        }
+        match (self.model_object(), self.assembly_worker.state(ASSEMBLY)) {
+            (Some(object), _) => Ok(vec![(self.doc.model.base.name().to_string(), object)]),
+            (None, Some(JobState::Done(Err(e)))) if !self.assembly_worker.is_stale(ASSEMBLY) => {
+                Err(format!("The curves could not be combined with the model: {e}"))
+            }
+            _ => Err("The object is still being made; export when the status bar says done".into()),
+        }
     }
 
     /// Writes the STL of the exported curves (all, or the selected one) to `path`.
@@ -307,15 +307,16 @@ impl TraceryApp {
     }
 
     /// Writes the 3MF of the exported curves to `path`: one object per
-    /// curve, named after it, each with a colour of its own.
+    /// canvas curve, named after it, each with a colour of its own; or the
+    /// model workspace's one object, named after the model.
     pub fn export_3mf_to(&mut self, path: &Path) {
         let result = self.export_products().and_then(|products| {
             let objects: Vec<ThreeMfObject<'_>> = products
                 .iter()
                 .enumerate()
-                .filter_map(|(k, (id, p))| {
+                .filter_map(|(k, (name, p))| {
                     let mesh = p.mesh_mm.as_ref()?;
-                    Some(ThreeMfObject { name: format!("Curve {id}"), colour_rgb: object_colour(k), mesh })
+                    Some(ThreeMfObject { name: name.clone(), colour_rgb: object_colour(k), mesh })
                 })
                 .collect();
             let mut bytes = std::io::Cursor::new(Vec::new());

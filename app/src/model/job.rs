@@ -1,18 +1,20 @@
-//! The job of a curve on the model: the vector brush along it, made into a
-//! shell on the surface, embossed or carved, and checked for printing.
+//! The jobs of the model workspace: each curve's band (the vector brush
+//! along it, laid on the surface and checked for printing), and the
+//! object (every band united with the model once, or cut out of it).
 
 use std::sync::Arc;
 
 use tracery_core::Product;
 use tracery_core::control::Control;
 use tracery_core::print::{PrintSettings, check_solid};
-use tracery_core::surface::{SurfaceMesh, SurfaceSettings};
-use tracery_core::vector_brush::{Exemplar, Settings, SurfaceSynthesisError, make_on_surface};
+use tracery_core::surface::{AssemblyError, PartRole, SurfaceMesh, SurfaceSettings, assemble_products};
+use tracery_core::vector_brush::{Exemplar, Settings, SurfaceSynthesisError, make_band_on_surface};
 
 use crate::modes::same;
 use crate::worker::Job;
 
-/// A pattern along a curve on the model.
+/// A pattern along a curve on the model, as a band before it is united
+/// with the model or cut out of it (see [`AssemblyJob`]).
 // Not `Debug`: the model's BVH has no useful text form.
 #[derive(Clone)]
 pub struct SurfaceJob {
@@ -44,7 +46,46 @@ impl Job for SurfaceJob {
     type Error = SurfaceSynthesisError;
 
     fn run(&self, control: &Control) -> Result<Product, SurfaceSynthesisError> {
-        let product = make_on_surface(&self.exemplar, &self.surface, &self.drawn, &self.settings, control)?;
+        let product = make_band_on_surface(&self.exemplar, &self.surface, &self.drawn, &self.settings, control)?;
         Ok(check_solid(product, &self.print, self.settings.thickness_mm))
+    }
+}
+
+/// The assembly worker's one slot.
+pub const ASSEMBLY: u64 = 0;
+
+/// The object made of every finished band on the model: what the view
+/// shows once it is ready, and what is exported.
+#[derive(Clone)]
+pub struct AssemblyJob {
+    /// The model.
+    pub surface: Arc<SurfaceMesh>,
+    /// Each band (a curve job's output) and what it does to the model.
+    pub parts: Vec<(Arc<Product>, PartRole)>,
+}
+
+impl PartialEq for AssemblyJob {
+    fn eq(&self, other: &Self) -> bool {
+        // A band is the same band while its job's output is the same `Arc`.
+        Arc::ptr_eq(&self.surface, &other.surface)
+            && self.parts.len() == other.parts.len()
+            && self.parts.iter().zip(&other.parts).all(|(a, b)| Arc::ptr_eq(&a.0, &b.0) && a.1 == b.1)
+    }
+}
+
+impl AssemblyJob {
+    /// Whether the object holds the model (a part is embossed or carved).
+    pub fn holds_model(&self) -> bool {
+        self.parts.iter().any(|(_, role)| *role != PartRole::Add)
+    }
+}
+
+impl Job for AssemblyJob {
+    type Output = Product;
+    type Error = AssemblyError;
+
+    fn run(&self, _control: &Control) -> Result<Product, AssemblyError> {
+        let parts: Vec<(&Product, PartRole)> = self.parts.iter().map(|(p, role)| (p.as_ref(), *role)).collect();
+        assemble_products(Some(&self.surface), &parts)
     }
 }

@@ -6,6 +6,6 @@ mod job;
 mod panel;
 mod view;
 
-pub use job::SurfaceJob;
+pub use job::{ASSEMBLY, AssemblyJob, SurfaceJob};
 pub use panel::{model_panel_ui, model_status_ui};
 pub use view::model_view_ui;

@@ -7,9 +7,11 @@ use tracery_core::surface::{BASE_NAMES, SurfaceOutput};
 use crate::TraceryApp;
 use crate::command::Command;
 use crate::document::{BaseRef, ModeSettings, SurfaceCurveItem, VectorBrushItem};
+use crate::model::ASSEMBLY;
 use crate::modes::vector_brush::VectorBrushUi;
 use crate::modes::{ModeEnv, ModeUi};
-use crate::panels::status::job_state_ui;
+use crate::panels::status::{ERROR, WARNING, job_state_ui};
+use crate::worker::JobState;
 
 /// The side panel of the model workspace.
 pub fn model_panel_ui(app: &mut TraceryApp, ui: &mut egui::Ui) {
@@ -147,12 +149,45 @@ pub fn model_status_ui(app: &TraceryApp, ui: &mut egui::Ui) {
         return;
     }
     let running = format!("Synthesizing curve {id} on the model…");
-    let shown = job_state_ui(ui, id, app.surface_worker.state(id), &running, |product| {
+    let shown = job_state_ui(ui, &format!("Curve {id}"), app.surface_worker.state(id), &running, |product| {
         let t = &product.topology;
         let triangles = product.mesh_mm.as_ref().map_or(0, |m| m.triangles.len());
         format!("{} component(s), {} hole(s), {triangles} triangles", t.components, t.holes)
     });
     if !shown {
         ui.label("Ready");
+    }
+    object_status_ui(app, ui);
+}
+
+/// Where the object made of every curve (and the model) stands, with only
+/// the warnings the combining itself gave: each curve's are on its own line.
+fn object_status_ui(app: &TraceryApp, ui: &mut egui::Ui) {
+    let holds_model = app.doc.model.curves.iter().any(|c| c.surface.output != SurfaceOutput::Pattern);
+    let curves = app.doc.model.curves.iter().filter(|c| c.surface.points_mm.len() >= 2).count();
+    if curves < 2 && !holds_model {
+        return;
+    }
+    ui.separator();
+    match (app.model_object(), app.assembly_worker.state(ASSEMBLY)) {
+        (Some(object), _) => {
+            let bodies = object.facts.count("shells").unwrap_or(0);
+            let triangles = object.mesh_mm.as_ref().map_or(0, |m| m.triangles.len());
+            let ms: f64 = ["hollow", "unite", "carve"].iter().filter_map(|s| object.timings.stage_ms(s)).sum();
+            ui.label(format!("Object: {bodies} body(ies), {triangles} triangles — combined in {ms:.0} ms"));
+            let of_curves: Vec<_> =
+                app.doc.model.curves.iter().filter_map(|c| app.surface_worker.output(c.id)).collect();
+            for w in object.warnings.iter().filter(|w| !of_curves.iter().any(|p| p.warnings.contains(w))) {
+                ui.label(RichText::new(format!("Warning: {w}")).color(WARNING));
+            }
+        }
+        (None, Some(JobState::Done(Err(e)))) if !app.assembly_worker.is_stale(ASSEMBLY) => {
+            ui.label(RichText::new(format!("Object: {e}")).color(ERROR));
+        }
+        _ if curves > 0 => {
+            ui.spinner();
+            ui.label("Combining the curves with the model…");
+        }
+        _ => {}
     }
 }

@@ -11,8 +11,8 @@ use crate::view3d::{Draw, View3dOutput, view_3d_ui};
 
 /// The model's colour (sRGB).
 const MODEL_RGBA: [f32; 4] = [0.62, 0.64, 0.68, 1.0];
-/// The model made with the selected curve, embossed or carved (sRGB).
-const SELECTED_MODEL_RGBA: [f32; 4] = [0.80, 0.72, 0.62, 1.0];
+/// A band to be cut out of the model, until the object is made (sRGB).
+const CARVE_RGBA: [f32; 4] = [0.25, 0.22, 0.22, 1.0];
 /// The selected curve's pattern (sRGB).
 const SELECTED_RGBA: [f32; 4] = [0.95, 0.62, 0.25, 1.0];
 
@@ -50,6 +50,37 @@ fn points_ui(ui: &egui::Ui, out: &View3dOutput, surface: &SurfaceMesh, points_mm
     }
 }
 
+/// What the view shows: the object once it is made and holds the model
+/// (a curve is embossed or carved), else the model with each band on it.
+fn model_draws(app: &mut TraceryApp, model_view: &std::sync::Arc<crate::view3d::ViewMesh>) -> Vec<Draw> {
+    let holds_model = app.doc.model.curves.iter().any(|c| c.surface.output != SurfaceOutput::Pattern);
+    let object = app.model_object().filter(|_| holds_model);
+    let mut draws = Vec::new();
+    for item in &app.doc.model.curves {
+        let Some(band) = app.surface_worker.output(item.id).cloned() else { continue };
+        // In the object, only a pattern lying on the model keeps its own colour.
+        if object.is_some() && item.surface.output != SurfaceOutput::Pattern {
+            continue;
+        }
+        let Some(mesh) = app.caches.view_mesh(&band) else { continue };
+        let selected = app.selected_surface == Some(item.id);
+        let rgba = match (item.surface.output, selected) {
+            (_, true) => SELECTED_RGBA,
+            (SurfaceOutput::Carve, false) => CARVE_RGBA,
+            (SurfaceOutput::Emboss, false) => MODEL_RGBA,
+            _ => PATTERN_RGBA,
+        };
+        draws.push(Draw { mesh, rgba });
+    }
+    // Drawn after the bands: where a band and its copy in the object are
+    // equally near, the depth test keeps the band's colour.
+    match object.and_then(|o| app.caches.view_mesh(&o)) {
+        Some(mesh) => draws.push(Draw { mesh, rgba: MODEL_RGBA }),
+        None => draws.insert(0, Draw { mesh: model_view.clone(), rgba: MODEL_RGBA }),
+    }
+    draws
+}
+
 /// The 3D view of the model workspace.
 pub fn model_view_ui(app: &mut TraceryApp, ui: &mut egui::Ui) {
     let base = app.doc.model.base.clone();
@@ -60,29 +91,7 @@ pub fn model_view_ui(app: &mut TraceryApp, ui: &mut egui::Ui) {
             return;
         }
     };
-    let mut draws = Vec::new();
-    // An embossed or carved product holds the model itself: the model is
-    // then not drawn again under it.
-    let mut model_in_a_product = false;
-    for item in &app.doc.model.curves {
-        let Some(product) = app.surface_worker.output(item.id).cloned() else { continue };
-        let Some(mesh) = app.caches.view_mesh(&product) else { continue };
-        let whole_model = item.surface.output != SurfaceOutput::Pattern;
-        model_in_a_product |= whole_model;
-        let selected = app.selected_surface == Some(item.id);
-        // An embossed or carved product is the model: coloured as the
-        // model (warmer when selected), its relief shows in the shading.
-        let rgba = match (whole_model, selected) {
-            (true, true) => SELECTED_MODEL_RGBA,
-            (true, false) => MODEL_RGBA,
-            (false, true) => SELECTED_RGBA,
-            (false, false) => PATTERN_RGBA,
-        };
-        draws.push(Draw { mesh, rgba });
-    }
-    if !model_in_a_product {
-        draws.insert(0, Draw { mesh: model.view.clone(), rgba: MODEL_RGBA });
-    }
+    let draws = model_draws(app, &model.view);
     let out = view_3d_ui(ui, "model", app.gpu_format, &draws, Some(model.view.bounds), &mut app.state.model_orbit);
     let points = app.selected_surface.and_then(|id| app.doc.model.curve(id)).map(|c| c.surface.points_mm.clone());
     points_ui(ui, &out, &model.surface, &points.unwrap_or_default());

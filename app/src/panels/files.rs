@@ -21,7 +21,14 @@ pub fn files_ui(app: &mut TraceryApp, ui: &mut egui::Ui) {
             }
         }
     });
-    ui.checkbox(&mut app.state.export_selected_only, "Export the selected curve only");
+    match app.state.workspace {
+        crate::state::Workspace::Canvas => {
+            ui.checkbox(&mut app.state.export_selected_only, "Export the selected curve only");
+        }
+        crate::state::Workspace::Model => {
+            ui.label("Exports one object: every curve, with the model where one is embossed or carved");
+        }
+    }
     svg_options_ui(ui, &mut app.state.svg);
     ui.horizontal(|ui| {
         if ui

@@ -9,9 +9,9 @@ use crate::TraceryApp;
 use crate::worker::JobState;
 
 /// Warnings' colour.
-const WARNING: Color32 = Color32::from_rgb(200, 140, 0);
+pub(crate) const WARNING: Color32 = Color32::from_rgb(200, 140, 0);
 /// Errors' colour.
-const ERROR: Color32 = Color32::from_rgb(220, 60, 60);
+pub(crate) const ERROR: Color32 = Color32::from_rgb(220, 60, 60);
 /// Width of the progress bar, points.
 const PROGRESS_WIDTH: f32 = 160.0;
 
@@ -25,14 +25,23 @@ pub fn status_ui(app: &mut TraceryApp, ui: &mut egui::Ui) {
         }
         let focus = app.selected.or_else(|| app.doc.curves.last().map(|c| c.id));
         let shown = focus.is_some_and(|id| {
-            job_state_ui(ui, id, app.worker.state(id), &format!("Synthesizing curve {id}…"), |product| {
-                let t = &product.topology;
-                let openings =
-                    if t.loop_openings > 0 { format!(" + {} loop opening", t.loop_openings) } else { String::new() };
-                let rings = if t.jump_rings > 0 { format!(" + {} jump ring", t.jump_rings) } else { String::new() };
-                let pieces = product.facts.count("pieces").map_or(String::new(), |n| format!(", {n} pieces"));
-                format!("{} component(s), {} hole(s){openings}{rings}{pieces}", t.components, t.holes)
-            })
+            job_state_ui(
+                ui,
+                &format!("Curve {id}"),
+                app.worker.state(id),
+                &format!("Synthesizing curve {id}…"),
+                |product| {
+                    let t = &product.topology;
+                    let openings = if t.loop_openings > 0 {
+                        format!(" + {} loop opening", t.loop_openings)
+                    } else {
+                        String::new()
+                    };
+                    let rings = if t.jump_rings > 0 { format!(" + {} jump ring", t.jump_rings) } else { String::new() };
+                    let pieces = product.facts.count("pieces").map_or(String::new(), |n| format!(", {n} pieces"));
+                    format!("{} component(s), {} hole(s){openings}{rings}{pieces}", t.components, t.holes)
+                },
+            )
         });
         if !shown {
             ui.label(if app.doc.curves.is_empty() {
@@ -45,12 +54,12 @@ pub fn status_ui(app: &mut TraceryApp, ui: &mut egui::Ui) {
     });
 }
 
-/// Where curve `id`'s job stands: a progress bar and `running` while it
-/// runs; when done, `summary` of the product with its time and warnings, or
-/// the error. Returns whether there was anything to show.
+/// Where the job of `name` (a curve, the object) stands: a progress bar
+/// and `running` while it runs; when done, `summary` of the product with
+/// its time and warnings, or the error. Returns whether there was anything to show.
 pub(crate) fn job_state_ui<E: std::fmt::Display>(
     ui: &mut egui::Ui,
-    id: u64,
+    name: &str,
     state: Option<&JobState<Product, E>>,
     running: &str,
     summary: impl Fn(&Product) -> String,
@@ -61,13 +70,13 @@ pub(crate) fn job_state_ui<E: std::fmt::Display>(
             ui.label(running);
         }
         Some(JobState::Done(Ok(product))) => {
-            ui.label(format!("Curve {id}: {} — {:.0} ms", summary(product), product.timings.total_ms()));
+            ui.label(format!("{name}: {} — {:.0} ms", summary(product), product.timings.total_ms()));
             for w in &product.warnings {
                 ui.label(RichText::new(format!("Warning: {w}")).color(WARNING));
             }
         }
         Some(JobState::Done(Err(e))) => {
-            ui.label(RichText::new(format!("Curve {id}: {e}")).color(ERROR));
+            ui.label(RichText::new(format!("{name}: {e}")).color(ERROR));
         }
         Some(JobState::Idle) | None => return false,
     }

@@ -3,8 +3,13 @@
 //! other solid (a lamp shade), so that a multi-curve lamp is one body in
 //! one file, with the model in it once.
 
+use glam::DVec2;
+
 use super::{HollowError, SurfaceMesh, hollow};
+use crate::Product;
+use crate::geom::fill_triangles;
 use crate::mesh::{BooleanError, Mesh, difference_solids, union_solids};
+use crate::product::Fact;
 use crate::report::{Timings, Warning};
 
 /// What one part does to the object.
@@ -128,4 +133,56 @@ pub fn assemble(
         warnings.push(Warning::CarvedApart { bodies });
     }
     Ok(Assembly { mesh_mm, bodies, wall_mm, warnings })
+}
+
+/// Room left between the flat patterns of several parts laid one above
+/// the other in a product's `region_mm`, mm: wide enough that no print
+/// check mistakes it for a narrow gap.
+const FLAT_SPACING_MM: f64 = 5.0;
+
+/// [`assemble`] for the products of several modes made on one model (the
+/// bands of curves on it, shades), into one product.
+///
+/// Its `mesh_mm` is the object; its `region_mm` the parts' flat patterns
+/// laid one above the other, the first at the bottom, and its topology
+/// theirs, summed. Warnings are gathered once each, timings summed, and the
+/// facts give the number of `parts` and the object's `shells`.
+pub fn assemble_products(
+    model: Option<&SurfaceMesh>,
+    parts: &[(&Product, PartRole)],
+) -> Result<Product, AssemblyError> {
+    let mut product = Product::default();
+    let mut bottom_mm = 0.0;
+    for (part, _) in parts {
+        if let Some(bounds) = part.region_mm.bounds() {
+            let lift = DVec2::new(0.0, bottom_mm - bounds.min.y);
+            product.region_mm.polygons.extend(part.region_mm.map_points(|p| p + lift).polygons);
+            bottom_mm += bounds.max.y - bounds.min.y + FLAT_SPACING_MM;
+        }
+        product.topology.components += part.topology.components;
+        product.topology.holes += part.topology.holes;
+        product.topology.loop_openings += part.topology.loop_openings;
+        product.timings.absorb(&part.timings);
+        for w in &part.warnings {
+            if !product.warnings.contains(w) {
+                product.warnings.push(w.clone());
+            }
+        }
+    }
+    let solids: Vec<Part> =
+        parts.iter().filter_map(|(p, role)| Some(Part { solid_mm: p.mesh_mm.as_ref()?, role: *role })).collect();
+    let object = assemble(model, &solids, &mut product.timings)?;
+    product.warnings.extend(object.warnings);
+    product.fill_mm = fill_triangles(&product.region_mm);
+    product.facts.push("parts", Fact::Count(parts.len()));
+    product.facts.push("shells", Fact::Count(object.bodies));
+    product.mesh_mm = Some(object.mesh_mm);
+    Ok(product)
+}
+
+impl crate::control::MaybeCancelled for AssemblyError {
+    fn is_cancelled(&self) -> bool {
+        // Booleans run to the end; a newer request replaces their result.
+        false
+    }
 }

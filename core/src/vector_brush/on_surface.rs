@@ -4,8 +4,6 @@
 //! long as the curve, and that pattern laid on the surface along the
 //! curve's band ([`crate::surface::lay_band`]) as a printable shell.
 
-use glam::DVec2;
-
 use super::{Exemplar, InvalidSetting, Settings, SynthesisError, synthesize};
 use crate::Product;
 use crate::control::{Control, MaybeCancelled};
@@ -16,7 +14,7 @@ use crate::product::{Fact, Facts};
 use crate::report::Timings;
 use crate::surface::{
     AssemblyError, BandOnSurface, DrawnError, EMBOSS_SINK_MM, Part, PartRole, Sheet, SurfaceMesh, SurfaceOutput,
-    SurfaceSettings, assemble, draw_on, lay_band,
+    SurfaceSettings, assemble, assemble_products, draw_on, lay_band,
 };
 
 /// Why a pattern could not be put on a surface.
@@ -165,11 +163,6 @@ pub fn make_on_surface(
     Ok(product)
 }
 
-/// Room left between the flat patterns of several curves laid one above
-/// the other in a product's `region_mm`, mm: wide enough that no print
-/// check mistakes it for a narrow gap.
-const FLAT_SPACING_MM: f64 = 5.0;
-
 /// Several curves on one model, each made as [`make_band_on_surface`]
 /// does (with the seed moved on by one for each next curve, so that equal
 /// curves differ), combined with the model once by
@@ -208,38 +201,16 @@ pub fn make_object_on_surface(
     if let [drawn] = curves {
         return make_on_surface(exemplar, surface, drawn, settings, control);
     }
-    let mut product = Product::default();
     let mut bands = Vec::new();
-    let mut bottom_mm = 0.0;
     for (k, drawn) in curves.iter().enumerate() {
         let mut brush = settings.clone();
         brush.seed = settings.seed.wrapping_add(k as u64);
-        let band = make_band_on_surface(exemplar, surface, drawn, &brush, &control.silent())?;
+        bands.push((make_band_on_surface(exemplar, surface, drawn, &brush, &control.silent())?, part_role(drawn)));
         control.report(0.8 * (k + 1) as f32 / curves.len() as f32);
-        if let Some(bounds) = band.region_mm.bounds() {
-            let lift = DVec2::new(0.0, bottom_mm - bounds.min.y);
-            product.region_mm.polygons.extend(band.region_mm.map_points(|p| p + lift).polygons);
-            bottom_mm += bounds.max.y - bounds.min.y + FLAT_SPACING_MM;
-        }
-        product.topology.components += band.topology.components;
-        product.topology.holes += band.topology.holes;
-        product.topology.loop_openings += band.topology.loop_openings;
-        product.timings.absorb(&band.timings);
-        for w in band.warnings {
-            if !product.warnings.contains(&w) {
-                product.warnings.push(w);
-            }
-        }
-        bands.push((band.mesh_mm.unwrap_or_default(), part_role(drawn)));
     }
-    let parts: Vec<Part> = bands.iter().map(|(mesh, role)| Part { solid_mm: mesh, role: *role }).collect();
-    let object = assemble(Some(surface), &parts, &mut product.timings)?;
-    product.warnings.extend(object.warnings);
-    product.fill_mm = fill_triangles(&product.region_mm);
-    product.facts.push("curves", Fact::Count(curves.len()));
+    let parts: Vec<(&Product, PartRole)> = bands.iter().map(|(band, role)| (band, *role)).collect();
+    let mut product = assemble_products(Some(surface), &parts)?;
     product.facts.push("base_triangles", Fact::Count(surface.triangles().len()));
     product.facts.push("thickness_mm", Fact::Number(settings.thickness_mm));
-    product.facts.push("shells", Fact::Count(object.bodies));
-    product.mesh_mm = Some(object.mesh_mm);
     Ok(product)
 }
