@@ -199,3 +199,45 @@ fn two_embossed_curves_export_as_one_object_holding_the_vase_once() {
     }
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+#[test]
+fn a_shade_added_on_the_cone_makes_a_lamp_in_one_body() {
+    let dir = std::env::temp_dir().join(format!("tracery-lamp-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).unwrap();
+    let (stl_path, three_mf) = (dir.join("lamp.stl"), dir.join("lamp.3mf"));
+    let mut harness = harness(vec![(FileKind::ExportStl, stl_path.clone()), (FileKind::Export3mf, three_mf.clone())]);
+    harness.step();
+    harness.get_by_label("3D model").click();
+    harness.run_steps(2);
+    harness.state_mut().doc.model.base = tracery::document::BaseRef::Builtin("cone".into());
+    harness.run_steps(2);
+    click_in_side_panel(&mut harness, "Add shade");
+    let app = harness.state();
+    assert_eq!(app.doc.model.shades.len(), 1, "{:?}", app.message);
+    assert!(app.doc.model.with_model, "a shade on the model takes the model as its foot");
+    settle_model(&mut harness);
+    click_in_side_panel(&mut harness, "Export STL…");
+    assert!(stl_path.exists(), "no STL written: {:?}", harness.state().message);
+    let check = stl::check_stl(&stl_path);
+    assert_eq!((check.open_edges, check.misoriented_edges), (0, 0), "{check:?}");
+    assert_eq!(check.shells, 1, "the shade stands on the cone as one body: {check:?}");
+    // The cone is in it whole, and the shade rises above it.
+    let cone = SurfaceMesh::new(builtin_base("cone").unwrap()).unwrap();
+    let points = stl::stl_vertices(&stl_path);
+    let top = points.iter().map(|v| v[2]).fold(f64::MIN, f64::max);
+    assert!(top > 100.0, "the shade's top is at {top} mm");
+    let read = |p: &std::path::Path| tracery_core::mesh::read_stl(&std::fs::read(p).unwrap(), "test").unwrap();
+    assert!(read(&stl_path).signed_volume() > cone.mesh().signed_volume() + 1000.0);
+    click_in_side_panel(&mut harness, "Export 3MF…");
+    let read = threemf::read_3mf(&std::fs::read(&three_mf).unwrap());
+    assert_eq!(read.objects.len(), 1, "the 3MF holds one object");
+    if let Some((manifold, objects)) = threemf::prusa_info(&three_mf) {
+        assert!(manifold && objects == 1, "PrusaSlicer: manifold {manifold}, {objects} object(s)");
+    }
+    // Undo takes the shade back.
+    harness.key_press_modifiers(egui::Modifiers::COMMAND, egui::Key::Z);
+    harness.run_steps(2);
+    assert!(harness.state().doc.model.shades.is_empty(), "undo removes the shade");
+    let _ = std::fs::remove_dir_all(&dir);
+}

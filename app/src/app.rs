@@ -6,13 +6,14 @@ use std::sync::Arc;
 use std::time::{Duration, Instant};
 
 use tracery_core::DVec2;
+use tracery_core::surface::PartRole;
 use tracery_core::vector_brush::part_role;
 
 use crate::command::Command;
 use crate::dialogs::{Dialogs, SystemDialogs};
 use crate::document::{Document, History, ModeSettings};
 use crate::live::{LIVE_ID, LiveJob, Session};
-use crate::model::{self, ASSEMBLY, AssemblyJob, SurfaceJob};
+use crate::model::{self, ASSEMBLY, AssemblyJob, ShadeJob, SurfaceJob};
 use crate::modes::{CurveJob, GalleryJob, JobError, mode_ui};
 use crate::panels::{files, gallery, preview_3d, side_panel, status, top_bar};
 use crate::solutions::Solutions;
@@ -59,6 +60,8 @@ pub struct TraceryApp {
     pub(crate) live: Worker<LiveJob>,
     /// Patterns of the curves on the model.
     pub(crate) surface_worker: Worker<SurfaceJob>,
+    /// Lamp shades on the model's axis.
+    pub(crate) shade_worker: Worker<ShadeJob>,
     /// The object made of them and the model (one slot, [`ASSEMBLY`]).
     pub(crate) assembly_worker: Worker<AssemblyJob>,
     /// What the stroke being drawn shares between its jobs.
@@ -103,6 +106,7 @@ impl TraceryApp {
             gallery: Worker::default(),
             live: Worker::live(Arc::new(|| {})),
             surface_worker: Worker::default(),
+            shade_worker: Worker::default(),
             assembly_worker: Worker::default(),
             live_session: Session::default(),
             gesture: None,
@@ -157,6 +161,7 @@ impl TraceryApp {
         self.doc.curves.iter().any(|c| self.worker.is_stale(c.id))
             || self.gallery_curve().is_some_and(|id| self.gallery.is_stale(id))
             || self.doc.model.curves.iter().any(|c| self.surface_worker.is_stale(c.id))
+            || self.doc.model.shades.iter().any(|c| self.shade_worker.is_stale(c.id))
             || self.assembly_worker.is_stale(ASSEMBLY)
     }
 
@@ -257,7 +262,10 @@ impl TraceryApp {
     /// with all of them.
     pub fn model_object(&self) -> Option<Arc<tracery_core::Product>> {
         let curves = self.doc.model.curves.iter().filter(|c| c.surface.points_mm.len() >= 2);
-        if curves.clone().any(|c| self.surface_worker.is_stale(c.id)) || self.assembly_worker.is_stale(ASSEMBLY) {
+        if curves.clone().any(|c| self.surface_worker.is_stale(c.id))
+            || self.doc.model.shades.iter().any(|c| self.shade_worker.is_stale(c.id))
+            || self.assembly_worker.is_stale(ASSEMBLY)
+        {
             return None;
         }
         match self.assembly_worker.state(ASSEMBLY) {
@@ -287,6 +295,7 @@ impl TraceryApp {
             self.gallery.set_waker(wake.clone());
             self.surface_worker.set_waker(wake.clone());
             self.assembly_worker.set_waker(wake.clone());
+            self.shade_worker.set_waker(wake.clone());
             self.live.set_waker(wake);
             self.waker_set = true;
         }
@@ -343,32 +352,57 @@ impl TraceryApp {
             }
         }
         self.surface_worker.retain(&ids);
-        let busy = self.surface_worker.poll(now);
+        let mut shade_ids = Vec::new();
+        for item in &self.doc.model.shades {
+            match self.caches.exemplar(&self.doc, &item.exemplar) {
+                Ok(exemplar) => {
+                    let job = ShadeJob {
+                        exemplar,
+                        settings: item.settings.clone(),
+                        shade: item.shade.clone(),
+                        lift_mm: item.lift_mm,
+                        print: self.doc.print,
+                    };
+                    self.shade_worker.want(item.id, job, now);
+                    shade_ids.push(item.id);
+                }
+                Err(e) => self.message = Some((e.to_string(), true)),
+            }
+        }
+        self.shade_worker.retain(&shade_ids);
+        let busy = self.surface_worker.poll(now) | self.shade_worker.poll(now);
         self.submit_assembly(now) || busy
+    }
+
+    /// A finished part of the object: `None` while it is being made,
+    /// `Some(None)` when it failed (its error is on the status line, and
+    /// export refuses until it is fixed, so it is left out meanwhile).
+    fn finished_part<J: crate::worker::Job<Output = tracery_core::Product>>(
+        worker: &Worker<J>,
+        id: u64,
+        role: PartRole,
+    ) -> Option<Option<(Arc<tracery_core::Product>, PartRole)>> {
+        match worker.state(id) {
+            _ if worker.is_stale(id) => None,
+            Some(JobState::Done(Ok(part))) => Some(Some((part.clone(), role))),
+            Some(JobState::Done(Err(_))) => Some(None),
+            _ => None,
+        }
     }
 
     /// Asks for the object once every curve on the model is done; returns whether it is being made.
     fn submit_assembly(&mut self, now: Instant) -> bool {
         let base = self.doc.model.base.clone();
-        // `None` while a curve is being made; a curve that failed is left out
-        // (its error is on the status line, and export refuses until it is fixed).
-        let parts: Option<Vec<_>> = self
-            .doc
-            .model
-            .curves
-            .iter()
-            .filter(|c| c.surface.points_mm.len() >= 2)
-            .map(|item| match self.surface_worker.state(item.id) {
-                _ if self.surface_worker.is_stale(item.id) => None,
-                Some(JobState::Done(Ok(band))) => Some(Some((band.clone(), part_role(&item.surface)))),
-                Some(JobState::Done(Err(_))) => Some(None),
-                _ => None,
-            })
-            .collect::<Option<Vec<_>>>()
-            .map(|parts| parts.into_iter().flatten().collect());
+        let curves = self.doc.model.curves.iter().filter(|c| c.surface.points_mm.len() >= 2);
+        let bands = curves.map(|c| Self::finished_part(&self.surface_worker, c.id, part_role(&c.surface)));
+        let shades = self.doc.model.shades.iter().map(|c| Self::finished_part(&self.shade_worker, c.id, PartRole::Add));
+        let parts: Option<Vec<_>> =
+            bands.chain(shades).collect::<Option<Vec<_>>>().map(|parts| parts.into_iter().flatten().collect());
         match (parts, self.caches.model(&self.doc.model, &base)) {
             (Some(parts), Ok(model)) if !parts.is_empty() => {
-                self.assembly_worker.want(ASSEMBLY, AssemblyJob { surface: model.surface.clone(), parts }, now);
+                let with_model = self.doc.model.with_model;
+                let job = AssemblyJob { surface: model.surface.clone(), parts, with_model };
+                self.assembly_worker.want(ASSEMBLY, job, now);
             }
             // Curves still being made keep the last object on screen.
             (None, Ok(_)) => {}

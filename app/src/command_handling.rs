@@ -109,19 +109,17 @@ impl TraceryApp {
     }
 
     fn delete_selected(&mut self) {
-        if self.state.workspace == Workspace::Model {
-            if let Some(id) = self.selected_surface.take() {
-                self.history.record(self.doc.clone());
-                self.doc.model.curves.retain(|c| c.id != id);
-                self.history_handled = true;
-            }
-            return;
-        }
-        if let Some(id) = self.selected.take() {
-            self.history.record(self.doc.clone());
-            self.doc.curves.retain(|c| c.id != id);
-            self.history_handled = true;
-        }
+        let selected = match self.state.workspace {
+            Workspace::Model => self.selected_surface.take(),
+            Workspace::Canvas => self.selected.take(),
+        };
+        let Some(id) = selected else { return };
+        self.history.record(self.doc.clone());
+        // Ids are shared by canvas curves, model curves and shades: one of them goes.
+        self.doc.curves.retain(|c| c.id != id);
+        self.doc.model.curves.retain(|c| c.id != id);
+        self.doc.model.shades.retain(|c| c.id != id);
+        self.history_handled = true;
     }
 
     /// Imports a 3D model from `path` and draws on it; a model that cannot
@@ -244,9 +242,10 @@ impl TraceryApp {
                 (true, Some(id)) => vec![id],
                 _ => self.doc.curves.iter().map(|c| c.id).collect(),
             },
-            // The object on the model is one: every curve is in it.
+            // The object on the model is one: every curve and shade is in it.
             Workspace::Model => {
-                self.doc.model.curves.iter().filter(|c| c.surface.points_mm.len() >= 2).map(|c| c.id).collect()
+                let curves = self.doc.model.curves.iter().filter(|c| c.surface.points_mm.len() >= 2).map(|c| c.id);
+                curves.chain(self.doc.model.shades.iter().map(|c| c.id)).collect()
             }
         }
     }
@@ -265,6 +264,9 @@ impl TraceryApp {
                 // Finished: the product, or `None` when the job failed.
                 let (stale, finished) = match self.state.workspace {
                     Workspace::Canvas => (self.worker.is_stale(id), done(self.worker.state(id))),
+                    Workspace::Model if self.doc.model.shade(id).is_some() => {
+                        (self.shade_worker.is_stale(id), done(self.shade_worker.state(id)))
+                    }
                     Workspace::Model => (self.surface_worker.is_stale(id), done(self.surface_worker.state(id))),
                 };
                 match (stale, finished) {

@@ -9,7 +9,7 @@ mod model;
 mod raster;
 
 pub use history::History;
-pub use model::{BaseRef, ImportedModel, ModelScene, SurfaceCurveItem};
+pub use model::{BaseRef, ImportedModel, ModelScene, ShadeItem, SurfaceCurveItem};
 pub use raster::{AvoidStroke, DEFAULT_RASTER_EXEMPLAR, ImportedRaster, RasterBrushItem, avoided_region};
 
 use serde::{Deserialize, Serialize};
@@ -290,10 +290,21 @@ impl Document {
         id
     }
 
+    /// Adds `shade` to the model workspace under a new id; returns the id.
+    pub fn add_shade(&mut self, shade: ShadeItem) -> u64 {
+        let id = self.next_id;
+        self.next_id += 1;
+        self.model.shades.push(ShadeItem { id, ..shade });
+        id
+    }
+
     /// Whether anything was drawn or imported that a person would miss:
-    /// curves on the canvas or on the model, or an imported model.
+    /// curves on the canvas or on the model, shades, or an imported model.
     pub fn has_drawing(&self) -> bool {
-        !self.curves.is_empty() || !self.model.curves.is_empty() || !self.model.imported.is_empty()
+        !self.curves.is_empty()
+            || !self.model.curves.is_empty()
+            || !self.model.shades.is_empty()
+            || !self.model.imported.is_empty()
     }
 
     /// The curve with `id`.

@@ -7,7 +7,7 @@ use base64::Engine as _;
 use serde::{Deserialize, Serialize};
 use tracery_core::export::write_stl;
 use tracery_core::mesh::{Mesh, read_stl};
-use tracery_core::surface::{BASE_NAMES, SurfaceSettings, builtin_base};
+use tracery_core::surface::{BASE_NAMES, ShadeSettings, SurfaceSettings, builtin_base};
 use tracery_core::vector_brush;
 
 use super::{DocumentError, ExemplarRef, file_stem, unique_name};
@@ -70,7 +70,38 @@ impl Default for SurfaceCurveItem {
     }
 }
 
-/// The model workspace: a model and the curves drawn on it.
+/// A lamp shade standing on the model's axis (the `z` axis), lifted to
+/// `lift_mm`: with a model as its foot, a lamp in one object.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(default)]
+pub struct ShadeItem {
+    /// Stable id, shared with the curves.
+    pub id: u64,
+    /// The exemplar of its rows.
+    pub exemplar: ExemplarRef,
+    /// The vector brush's settings, for each row.
+    pub settings: vector_brush::Settings,
+    /// The shade's shape, rims and rows (the struct `tracery shade` uses).
+    pub shade: ShadeSettings,
+    /// Height of the shade's bottom rim above the model's `z = 0`, mm.
+    pub lift_mm: f64,
+}
+
+impl Default for ShadeItem {
+    fn default() -> Self {
+        let mut settings = vector_brush::Settings::default();
+        settings.band_mm = 12.0;
+        ShadeItem {
+            id: 0,
+            exemplar: ExemplarRef::Builtin("lace".into()),
+            settings,
+            shade: ShadeSettings::default(),
+            lift_mm: 0.0,
+        }
+    }
+}
+
+/// The model workspace: a model, the curves drawn on it and the shades over it.
 #[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize)]
 #[serde(default)]
 pub struct ModelScene {
@@ -80,6 +111,18 @@ pub struct ModelScene {
     pub imported: Vec<ImportedModel>,
     /// Curves on the model, in drawing order.
     pub curves: Vec<SurfaceCurveItem>,
+    /// Lamp shades on the model's axis.
+    pub shades: Vec<ShadeItem>,
+    /// Whether the model is part of the exported object even where no
+    /// curve is embossed on it (a lamp's foot).
+    pub with_model: bool,
+}
+
+impl ModelScene {
+    /// Whether the object holds the model: asked for, or a curve is embossed or carved.
+    pub fn holds_model(&self) -> bool {
+        self.with_model || self.curves.iter().any(|c| c.surface.output != tracery_core::surface::SurfaceOutput::Pattern)
+    }
 }
 
 impl ModelScene {
@@ -122,5 +165,15 @@ impl ModelScene {
     /// The curve with `id`, mutable.
     pub fn curve_mut(&mut self, id: u64) -> Option<&mut SurfaceCurveItem> {
         self.curves.iter_mut().find(|c| c.id == id)
+    }
+
+    /// The shade with `id`.
+    pub fn shade(&self, id: u64) -> Option<&ShadeItem> {
+        self.shades.iter().find(|c| c.id == id)
+    }
+
+    /// The shade with `id`, mutable.
+    pub fn shade_mut(&mut self, id: u64) -> Option<&mut ShadeItem> {
+        self.shades.iter_mut().find(|c| c.id == id)
     }
 }

@@ -4,8 +4,9 @@
 
 mod job;
 mod panel;
+mod shade_panel;
 mod view;
 
-pub use job::{ASSEMBLY, AssemblyJob, SurfaceJob};
+pub use job::{ASSEMBLY, AssemblyJob, ShadeJob, SurfaceJob};
 pub use panel::{model_panel_ui, model_status_ui};
 pub use view::model_view_ui;

@@ -3,11 +3,13 @@
 
 use egui::RichText;
 use tracery_core::surface::{BASE_NAMES, SurfaceOutput};
+use tracery_core::vector_brush::Settings;
 
 use crate::TraceryApp;
 use crate::command::Command;
-use crate::document::{BaseRef, ModeSettings, SurfaceCurveItem, VectorBrushItem};
+use crate::document::{BaseRef, ExemplarRef, ModeSettings, SurfaceCurveItem, VectorBrushItem};
 use crate::model::ASSEMBLY;
+use crate::model::shade_panel::{shade_settings_ui, shades_list_ui};
 use crate::modes::vector_brush::VectorBrushUi;
 use crate::modes::{ModeEnv, ModeUi};
 use crate::panels::status::{ERROR, WARNING, job_state_ui};
@@ -33,6 +35,9 @@ pub fn model_panel_ui(app: &mut TraceryApp, ui: &mut egui::Ui) {
             app.queue(Command::ImportModel);
         }
     });
+    ui.checkbox(&mut app.doc.model.with_model, "Print the model too").on_hover_text(
+        "The model is part of the exported object, as a lamp's foot, even where no curve is embossed on it",
+    );
     if base != app.doc.model.base {
         // Curves keep their points: they snap onto the new model.
         app.doc.model.base = base;
@@ -67,13 +72,19 @@ pub fn model_panel_ui(app: &mut TraceryApp, ui: &mut egui::Ui) {
         }
     });
     ui.label(
-        RichText::new(match app.selected_surface {
+        RichText::new(match app.selected_surface.filter(|id| app.doc.model.curve(*id).is_some()) {
             Some(id) => format!("Click on the model to add points to Curve {id}"),
             None => "Click on the model to start a curve".to_string(),
         })
         .weak(),
     );
     ui.separator();
+    shades_list_ui(app, ui);
+    ui.separator();
+    if let Some(id) = app.selected_surface.filter(|id| app.doc.model.shade(*id).is_some()) {
+        shade_settings_ui(app, ui, id);
+        return;
+    }
     let mut item = match app.selected_surface.and_then(|id| app.doc.model.curve(id)) {
         Some(item) => item.clone(),
         None => app.state.new_surface_curve.clone(),
@@ -86,29 +97,34 @@ pub fn model_panel_ui(app: &mut TraceryApp, ui: &mut egui::Ui) {
         .strong(),
     );
     surface_settings_ui(ui, &mut item);
-    // The exemplar and pattern controls are the vector brush's own.
-    let mut mode =
-        ModeSettings::VectorBrush(VectorBrushItem { exemplar: item.exemplar.clone(), settings: item.settings.clone() });
-    let mut commands = Vec::new();
-    let mut env = ModeEnv { doc: &app.doc, caches: &mut app.caches, commands: &mut commands };
-    VectorBrushUi.settings_ui(ui, &mut mode, &mut env);
-    if let ModeSettings::VectorBrush(v) = mode {
-        item.exemplar = v.exemplar;
-        item.settings = v.settings;
-    }
-    // "Another one" picks the next alternative of a canvas curve; here it
-    // is the seed that changes the pattern.
-    for command in commands {
-        match command {
-            Command::AnotherOne => item.settings.seed = item.settings.seed.wrapping_add(1),
-            other => app.queue(other),
-        }
-    }
+    brush_ui(app, ui, &mut item.exemplar, &mut item.settings);
     match app.selected_surface.and_then(|id| app.doc.model.curve_mut(id)) {
         Some(stored) if *stored != item => *stored = item,
         Some(_) => {}
         None if app.state.new_surface_curve != item => app.state.new_surface_curve = item,
         None => {}
+    }
+}
+
+/// The vector brush's own exemplar and pattern controls, for a curve or a
+/// shade's rows.
+pub(super) fn brush_ui(app: &mut TraceryApp, ui: &mut egui::Ui, exemplar: &mut ExemplarRef, settings: &mut Settings) {
+    let mut mode =
+        ModeSettings::VectorBrush(VectorBrushItem { exemplar: exemplar.clone(), settings: settings.clone() });
+    let mut commands = Vec::new();
+    let mut env = ModeEnv { doc: &app.doc, caches: &mut app.caches, commands: &mut commands };
+    VectorBrushUi.settings_ui(ui, &mut mode, &mut env);
+    if let ModeSettings::VectorBrush(v) = mode {
+        *exemplar = v.exemplar;
+        *settings = v.settings;
+    }
+    // "Another one" picks the next alternative of a canvas curve; here it
+    // is the seed that changes the pattern.
+    for command in commands {
+        match command {
+            Command::AnotherOne => settings.seed = settings.seed.wrapping_add(1),
+            other => app.queue(other),
+        }
     }
 }
 
@@ -163,9 +179,10 @@ pub fn model_status_ui(app: &TraceryApp, ui: &mut egui::Ui) {
 /// Where the object made of every curve (and the model) stands, with only
 /// the warnings the combining itself gave: each curve's are on its own line.
 fn object_status_ui(app: &TraceryApp, ui: &mut egui::Ui) {
-    let holds_model = app.doc.model.curves.iter().any(|c| c.surface.output != SurfaceOutput::Pattern);
+    let holds_model = app.doc.model.holds_model();
     let curves = app.doc.model.curves.iter().filter(|c| c.surface.points_mm.len() >= 2).count();
-    if curves < 2 && !holds_model {
+    let parts = curves + app.doc.model.shades.len();
+    if parts < 2 && !holds_model {
         return;
     }
     ui.separator();
@@ -184,7 +201,7 @@ fn object_status_ui(app: &TraceryApp, ui: &mut egui::Ui) {
         (None, Some(JobState::Done(Err(e)))) if !app.assembly_worker.is_stale(ASSEMBLY) => {
             ui.label(RichText::new(format!("Object: {e}")).color(ERROR));
         }
-        _ if curves > 0 => {
+        _ if parts > 0 => {
             ui.spinner();
             ui.label("Combining the curves with the model…");
         }

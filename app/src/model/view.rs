@@ -53,8 +53,7 @@ fn points_ui(ui: &egui::Ui, out: &View3dOutput, surface: &SurfaceMesh, points_mm
 /// What the view shows: the object once it is made and holds the model
 /// (a curve is embossed or carved), else the model with each band on it.
 fn model_draws(app: &mut TraceryApp, model_view: &std::sync::Arc<crate::view3d::ViewMesh>) -> Vec<Draw> {
-    let holds_model = app.doc.model.curves.iter().any(|c| c.surface.output != SurfaceOutput::Pattern);
-    let object = app.model_object().filter(|_| holds_model);
+    let object = app.model_object().filter(|_| app.doc.model.holds_model());
     let mut draws = Vec::new();
     for item in &app.doc.model.curves {
         let Some(band) = app.surface_worker.output(item.id).cloned() else { continue };
@@ -70,6 +69,12 @@ fn model_draws(app: &mut TraceryApp, model_view: &std::sync::Arc<crate::view3d::
             (SurfaceOutput::Emboss, false) => MODEL_RGBA,
             _ => PATTERN_RGBA,
         };
+        draws.push(Draw { mesh, rgba });
+    }
+    for item in &app.doc.model.shades {
+        let Some(shade) = app.shade_worker.output(item.id).cloned() else { continue };
+        let Some(mesh) = app.caches.view_mesh(&shade) else { continue };
+        let rgba = if app.selected_surface == Some(item.id) { SELECTED_RGBA } else { PATTERN_RGBA };
         draws.push(Draw { mesh, rgba });
     }
     // Drawn after the bands: where a band and its copy in the object are
@@ -92,7 +97,11 @@ pub fn model_view_ui(app: &mut TraceryApp, ui: &mut egui::Ui) {
         }
     };
     let draws = model_draws(app, &model.view);
-    let out = view_3d_ui(ui, "model", app.gpu_format, &draws, Some(model.view.bounds), &mut app.state.model_orbit);
+    // Framed round the model and the shades over it; not round the bands,
+    // whose few millimetres would move the camera at every change.
+    let shades = app.doc.model.shades.iter().filter_map(|c| app.shade_worker.output(c.id));
+    let frame = shades.filter_map(|p| app.caches.view_mesh(p)).fold(model.view.bounds, |b, m| b.union(&m.bounds));
+    let out = view_3d_ui(ui, "model", app.gpu_format, &draws, Some(frame), &mut app.state.model_orbit);
     let points = app.selected_surface.and_then(|id| app.doc.model.curve(id)).map(|c| c.surface.points_mm.clone());
     points_ui(ui, &out, &model.surface, &points.unwrap_or_default());
     let Some((origin, direction)) = out.clicked_ray else { return };

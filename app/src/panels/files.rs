@@ -26,7 +26,7 @@ pub fn files_ui(app: &mut TraceryApp, ui: &mut egui::Ui) {
             ui.checkbox(&mut app.state.export_selected_only, "Export the selected curve only");
         }
         crate::state::Workspace::Model => {
-            ui.label("Exports one object: every curve, with the model where one is embossed or carved");
+            ui.label("Exports one object: every curve and shade, with the model where it is part of it");
         }
     }
     svg_options_ui(ui, &mut app.state.svg);

@@ -71,7 +71,8 @@ pub enum AssemblyError {
 /// Combines `parts` made on `model` into one object.
 ///
 /// The object starts empty, or as the whole model when a part is
-/// embossed, or as the model hollowed to the largest wall asked when a
+/// embossed or `with_model` asks for it (the model as a lamp's foot), or
+/// as the model hollowed to the largest wall asked when a
 /// part is carved. Every added and embossed part is then united with it,
 /// and every carved part cut out of it, in that order: a pattern cut out
 /// of the model cuts through whatever was embossed where it runs.
@@ -87,12 +88,13 @@ pub enum AssemblyError {
 /// }]), 1.0).unwrap();
 /// let (a, b, c) = (square(0.0), square(1.0), square(5.0));
 /// let parts: Vec<Part> = [&a, &b, &c].iter().map(|m| Part { solid_mm: m, role: PartRole::Add }).collect();
-/// let object = assemble(None, &parts, &mut Default::default()).unwrap();
+/// let object = assemble(None, false, &parts, &mut Default::default()).unwrap();
 /// assert!(object.mesh_mm.sanity_check().is_ok());
 /// assert_eq!(object.bodies, 2);
 /// ```
 pub fn assemble(
     model: Option<&SurfaceMesh>,
+    with_model: bool,
     parts: &[Part<'_>],
     timings: &mut Timings,
 ) -> Result<Assembly, AssemblyError> {
@@ -101,7 +103,7 @@ pub fn assemble(
         _ => None,
     });
     let wall_mm = walls.clone().reduce(f64::max);
-    let embossed = parts.iter().any(|p| p.role == PartRole::Emboss);
+    let embossed = with_model || parts.iter().any(|p| p.role == PartRole::Emboss);
     let mut warnings = Vec::new();
     let mut object: Option<Mesh> = match (wall_mm, embossed) {
         (None, false) => None,
@@ -149,6 +151,7 @@ const FLAT_SPACING_MM: f64 = 5.0;
 /// facts give the number of `parts` and the object's `shells`.
 pub fn assemble_products(
     model: Option<&SurfaceMesh>,
+    with_model: bool,
     parts: &[(&Product, PartRole)],
 ) -> Result<Product, AssemblyError> {
     let mut product = Product::default();
@@ -171,7 +174,7 @@ pub fn assemble_products(
     }
     let solids: Vec<Part> =
         parts.iter().filter_map(|(p, role)| Some(Part { solid_mm: p.mesh_mm.as_ref()?, role: *role })).collect();
-    let object = assemble(model, &solids, &mut product.timings)?;
+    let object = assemble(model, with_model, &solids, &mut product.timings)?;
     product.warnings.extend(object.warnings);
     product.fill_mm = fill_triangles(&product.region_mm);
     product.facts.push("parts", Fact::Count(parts.len()));

@@ -156,7 +156,7 @@ pub fn make_on_surface(
     let mut product = make_band_on_surface(exemplar, surface, drawn, settings, control)?;
     let Some(band) = product.mesh_mm.take() else { return Ok(product) };
     let part = Part { solid_mm: &band, role: part_role(drawn) };
-    let object = assemble(Some(surface), &[part], &mut product.timings)?;
+    let object = assemble(Some(surface), false, &[part], &mut product.timings)?;
     product.warnings.extend(object.warnings);
     product.facts.push("shells", Fact::Count(object.bodies));
     product.mesh_mm = Some(object.mesh_mm);
@@ -209,7 +209,7 @@ pub fn make_object_on_surface(
         control.report(0.8 * (k + 1) as f32 / curves.len() as f32);
     }
     let parts: Vec<(&Product, PartRole)> = bands.iter().map(|(band, role)| (band, *role)).collect();
-    let mut product = assemble_products(Some(surface), &parts)?;
+    let mut product = assemble_products(Some(surface), false, &parts)?;
     product.facts.push("base_triangles", Fact::Count(surface.triangles().len()));
     product.facts.push("thickness_mm", Fact::Number(settings.thickness_mm));
     Ok(product)
