@@ -132,3 +132,35 @@ fn regenerate_model_screenshot() {
     settle_model(&mut harness);
     save(&mut harness, "model.png");
 }
+
+#[test]
+#[ignore = "writes screenshots/; run on purpose"]
+fn regenerate_lamp_screenshot() {
+    let mut harness = rendered_window();
+    harness.get_by_label("3D model").click();
+    harness.run_steps(2);
+    harness.state_mut().doc.model.base = tracery::document::BaseRef::Builtin("cone".into());
+    harness.run_steps(2);
+    drive::click_in_side_panel(&mut harness, "Add shade");
+    {
+        let app = harness.state_mut();
+        // A ring of chain embossed round the foot, as points picked round it.
+        let cone = SurfaceMesh::new(builtin_base("cone").unwrap()).unwrap();
+        let ring = (0..6)
+            .map(|k| {
+                let a = k as f64 / 6.0 * std::f64::consts::TAU;
+                cone.closest_point([25.0 * a.cos(), 25.0 * a.sin(), 16.0]).position_mm.to_array()
+            })
+            .collect();
+        let mut chain = SurfaceCurveItem::default();
+        chain.settings.band_mm = 8.0;
+        chain.surface.points_mm = ring;
+        chain.surface.closed = true;
+        chain.surface.output = tracery_core::surface::SurfaceOutput::Emboss;
+        let id = app.doc.add_surface_curve(&chain);
+        app.doc.model.curve_mut(id).unwrap().surface = chain.surface.clone();
+        app.selected_surface = None;
+    }
+    settle_model(&mut harness);
+    save(&mut harness, "lamp.png");
+}

@@ -151,7 +151,23 @@ fn surface_settings_ui(ui: &mut egui::Ui, item: &mut SurfaceCurveItem) {
 
 /// The status line of the model workspace, about the selected curve (or the last one).
 pub fn model_status_ui(app: &TraceryApp, ui: &mut egui::Ui) {
+    part_status_ui(app, ui);
+    object_status_ui(app, ui);
+}
+
+/// The selected curve's or shade's status (or the last curve's).
+fn part_status_ui(app: &TraceryApp, ui: &mut egui::Ui) {
     let focus = app.selected_surface.or_else(|| app.doc.model.curves.last().map(|c| c.id));
+    if let Some(id) = focus.filter(|id| app.doc.model.shade(*id).is_some()) {
+        let running = format!("Making shade {id}…");
+        job_state_ui(ui, &format!("Shade {id}"), app.shade_worker.state(id), &running, |product| {
+            let t = &product.topology;
+            let rows = product.facts.count("rows").unwrap_or(0);
+            let triangles = product.mesh_mm.as_ref().map_or(0, |m| m.triangles.len());
+            format!("{rows} rows, {} component(s), {} hole(s), {triangles} triangles", t.components, t.holes)
+        });
+        return;
+    }
     let Some(item) = focus.and_then(|id| app.doc.model.curve(id)) else {
         ui.label(format!(
             "Click on the {} to pick the points of a curve; the pattern follows it",
@@ -173,11 +189,10 @@ pub fn model_status_ui(app: &TraceryApp, ui: &mut egui::Ui) {
     if !shown {
         ui.label("Ready");
     }
-    object_status_ui(app, ui);
 }
 
-/// Where the object made of every curve (and the model) stands, with only
-/// the warnings the combining itself gave: each curve's are on its own line.
+/// Where the object made of every curve and shade (and the model) stands,
+/// with only the warnings the combining itself gave: each part's are on its own line.
 fn object_status_ui(app: &TraceryApp, ui: &mut egui::Ui) {
     let holds_model = app.doc.model.holds_model();
     let curves = app.doc.model.curves.iter().filter(|c| c.surface.points_mm.len() >= 2).count();
@@ -192,9 +207,10 @@ fn object_status_ui(app: &TraceryApp, ui: &mut egui::Ui) {
             let triangles = object.mesh_mm.as_ref().map_or(0, |m| m.triangles.len());
             let ms: f64 = ["hollow", "unite", "carve"].iter().filter_map(|s| object.timings.stage_ms(s)).sum();
             ui.label(format!("Object: {bodies} body(ies), {triangles} triangles — combined in {ms:.0} ms"));
-            let of_curves: Vec<_> =
-                app.doc.model.curves.iter().filter_map(|c| app.surface_worker.output(c.id)).collect();
-            for w in object.warnings.iter().filter(|w| !of_curves.iter().any(|p| p.warnings.contains(w))) {
+            let curves = app.doc.model.curves.iter().filter_map(|c| app.surface_worker.output(c.id));
+            let shades = app.doc.model.shades.iter().filter_map(|c| app.shade_worker.output(c.id));
+            let of_parts: Vec<_> = curves.chain(shades).collect();
+            for w in object.warnings.iter().filter(|w| !of_parts.iter().any(|p| p.warnings.contains(w))) {
                 ui.label(RichText::new(format!("Warning: {w}")).color(WARNING));
             }
         }

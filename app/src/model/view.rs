@@ -50,17 +50,19 @@ fn points_ui(ui: &egui::Ui, out: &View3dOutput, surface: &SurfaceMesh, points_mm
     }
 }
 
-/// What the view shows: the object once it is made and holds the model
-/// (a curve is embossed or carved), else the model with each band on it.
+/// What the view shows: the model with each band and shade on it, each in
+/// its colour; or, once a curve is carved, the object itself (the carved
+/// openings are only in it), in the model's colour. Embossed bands and
+/// shades drawn over the model look as their union does, and drawing both
+/// the object and its parts would make their equal depths flicker.
 fn model_draws(app: &mut TraceryApp, model_view: &std::sync::Arc<crate::view3d::ViewMesh>) -> Vec<Draw> {
-    let object = app.model_object().filter(|_| app.doc.model.holds_model());
-    let mut draws = Vec::new();
+    let carved = app.doc.model.curves.iter().any(|c| c.surface.output == SurfaceOutput::Carve);
+    if let Some(mesh) = app.model_object().filter(|_| carved).and_then(|o| app.caches.view_mesh(&o)) {
+        return vec![Draw { mesh, rgba: MODEL_RGBA }];
+    }
+    let mut draws = vec![Draw { mesh: model_view.clone(), rgba: MODEL_RGBA }];
     for item in &app.doc.model.curves {
         let Some(band) = app.surface_worker.output(item.id).cloned() else { continue };
-        // In the object, only a pattern lying on the model keeps its own colour.
-        if object.is_some() && item.surface.output != SurfaceOutput::Pattern {
-            continue;
-        }
         let Some(mesh) = app.caches.view_mesh(&band) else { continue };
         let selected = app.selected_surface == Some(item.id);
         let rgba = match (item.surface.output, selected) {
@@ -76,12 +78,6 @@ fn model_draws(app: &mut TraceryApp, model_view: &std::sync::Arc<crate::view3d::
         let Some(mesh) = app.caches.view_mesh(&shade) else { continue };
         let rgba = if app.selected_surface == Some(item.id) { SELECTED_RGBA } else { PATTERN_RGBA };
         draws.push(Draw { mesh, rgba });
-    }
-    // Drawn after the bands: where a band and its copy in the object are
-    // equally near, the depth test keeps the band's colour.
-    match object.and_then(|o| app.caches.view_mesh(&o)) {
-        Some(mesh) => draws.push(Draw { mesh, rgba: MODEL_RGBA }),
-        None => draws.insert(0, Draw { mesh: model_view.clone(), rgba: MODEL_RGBA }),
     }
     draws
 }
