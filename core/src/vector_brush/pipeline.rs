@@ -2,14 +2,16 @@
 //! pattern, each stage timed.
 
 use glam::DVec2;
+use rayon::prelude::*;
 
+use super::shade::derived_seed;
 use super::{
     BAND_MARGIN, BandPattern, CurveKind, Exemplar, ExemplarError, InvalidSetting, PieceSet, Settings, SliceError,
     SliceOptions, Solution, SolveError, SolveOptions, spread_offsets, stitch,
 };
 use crate::control::{Control, MaybeCancelled};
 use crate::curve::{Curve, CurveError, MAPPING_TOLERANCE_MM, PlanarPattern, map_along, planar_topology};
-use crate::geom::{PatternTopology, count_topology, separate_touching, without_slivers};
+use crate::geom::{PatternTopology, count_topology, separate_touching, union, without_slivers};
 use crate::mesh::MeshError;
 use crate::report::{Timings, Warning};
 
@@ -295,9 +297,21 @@ pub(crate) fn laid_out(
         .collect())
 }
 
+/// Strips made along `u` for a rectangle's second pass: stacked, they are
+/// its exemplar, so that the rows it cuts from them differ (one strip
+/// would give the same row over and over).
+pub const RECTANGLE_STRIPS: usize = 3;
+
+/// How far stacked strips overlap, as a share of the band: a hair, so
+/// that material reaching a strip's edge is welded to the next strip's
+/// by the union rather than left touching along a line.
+const STRIP_OVERLAP: f64 = 1e-4;
+
 /// Synthesizes a rectangle `width_mm` × `height_mm` in two passes (section
-/// 6.2): a strip along `u` first, then that strip, turned 90°, used as the
-/// exemplar along `v`. Both passes keep the topology targets.
+/// 6.2): [`RECTANGLE_STRIPS`] strips along `u` first, each with its own
+/// seed, stacked; then the stack, turned 90°, used as the exemplar along
+/// `v`, which cuts rows out of it with seams and topology of its own. Both
+/// passes keep the topology targets.
 pub fn synthesize_rectangle(
     exemplar: &Exemplar,
     width_mm: f64,
@@ -305,8 +319,29 @@ pub fn synthesize_rectangle(
     settings: &Settings,
     control: &Control,
 ) -> Result<Synthesis, SynthesisError> {
-    let first = synthesize(exemplar, &Curve::line(width_mm)?, settings, control)?;
-    // The strip, turned so that its height runs along u.
+    let line = Curve::line(width_mm)?;
+    // The first strip with the person's seed, the others with seeds drawn from it.
+    let mut first = synthesize(exemplar, &line, settings, &control.silent())?;
+    let others: Vec<Synthesis> = (1..RECTANGLE_STRIPS)
+        .into_par_iter()
+        .map(|k| {
+            let mut strip_settings = settings.clone();
+            strip_settings.seed = derived_seed(settings.seed, k);
+            synthesize(exemplar, &line, &strip_settings, &control.silent())
+        })
+        .collect::<Result<_, _>>()?;
+    control.report(0.5);
+    let pitch_mm = settings.band_mm * (1.0 - STRIP_OVERLAP);
+    let mut stacked = vec![first.planar.region.clone()];
+    for (k, strip) in others.iter().enumerate() {
+        let lift = DVec2::new(0.0, (k + 1) as f64 * pitch_mm);
+        stacked.push(strip.planar.region.map_points(|p| p + lift));
+        first.timings.absorb(&strip.timings);
+        first
+            .warnings
+            .extend(strip.warnings.iter().filter(|w| !first.warnings.contains(w)).cloned().collect::<Vec<_>>());
+    }
+    first.planar.region = union(&stacked.iter().collect::<Vec<_>>());
     let turned = first.planar.region.map_points(|p| DVec2::new(p.y, -p.x));
     let strip = Exemplar::from_region("strip", turned)?;
     let mut second_settings = settings.clone();

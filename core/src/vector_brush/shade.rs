@@ -53,10 +53,10 @@ impl MaybeCancelled for ShadeSynthesisError {
     }
 }
 
-/// The seed of row `row`: the person's own for the first row, and one
-/// drawn from it for each next row, so that rows differ and the same
-/// settings always give the same shade.
-fn row_seed(seed: u64, row: usize) -> u64 {
+/// The seed of row (or strip) `row`: the person's own for the first, and
+/// one drawn from it for each next, so that rows differ and the same
+/// settings always give the same result.
+pub(crate) fn derived_seed(seed: u64, row: usize) -> u64 {
     if row == 0 {
         return seed;
     }
@@ -92,7 +92,7 @@ fn made_rows(
         .map(|(k, place)| {
             let mut row_settings = settings.clone();
             row_settings.band_mm = place.band_mm;
-            row_settings.seed = row_seed(settings.seed, k);
+            row_settings.seed = derived_seed(settings.seed, k);
             row_settings.closed_pattern = true;
             let fail = |source: SynthesisError| ShadeSynthesisError::Row { row: k + 1, source };
             let circle = Curve::circle(place.radius_mm).map_err(|e| fail(e.into()))?;
