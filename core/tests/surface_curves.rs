@@ -99,3 +99,30 @@ fn a_ring_through_four_points_at_one_height_stays_at_that_height() {
     let circle = std::f64::consts::TAU * 25.0;
     assert!((length - circle).abs() < 0.005 * circle, "ring {length:.2} mm against the circle's {circle:.2}");
 }
+
+#[test]
+fn hollowed_models_with_creases_keep_the_whole_wall() {
+    // The vase's lip and foot, and the cylinder's and cone's rims, are
+    // creases: moved along smooth normals, vertices beside them came within
+    // half a wall of the other side.
+    let wall_mm = 2.0;
+    for base in ["vase", "cylinder", "cone", "egg"] {
+        let model = builtin_base(base).unwrap();
+        let surface = SurfaceMesh::new(model.clone()).unwrap();
+        let shell = tracery_core::surface::hollow(&surface, wall_mm).unwrap();
+        assert!(shell.sanity_check().is_ok(), "{base}");
+        assert_eq!(shell.shell_count(), 2, "{base}");
+        let inner = &shell.vertices[model.vertices.len()..];
+        // Every inner vertex near a crease, and a sample of the rest, by brute force.
+        let near_crease =
+            |p: &[f64; 3]| p[2] < 3.0 || p[2] > model.vertices.iter().map(|v| v[2]).fold(0.0, f64::max) - 3.0;
+        let step = (inner.len() / 200).max(1);
+        let checked: Vec<&[f64; 3]> =
+            inner.iter().enumerate().filter(|(i, p)| near_crease(p) || i % step == 0).map(|(_, p)| p).collect();
+        let thinnest =
+            checked.iter().map(|p| distance::to_mesh(&model.vertices, &model.triangles, **p)).fold(f64::MAX, f64::min);
+        assert!(thinnest > 0.95 * wall_mm, "{base}: an inner vertex is {thinnest:.3} mm from the outside");
+        // The inner surface faces in: the shell holds a positive volume.
+        assert!(shell.signed_volume() > 0.0, "{base}");
+    }
+}
