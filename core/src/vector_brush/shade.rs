@@ -70,6 +70,10 @@ pub(crate) fn derived_seed(seed: u64, row: usize) -> u64 {
 /// Each retry lays the rows closer by this share of the band.
 const OVERLAP_STEP: f64 = 0.15;
 
+/// More pieces than this per row, not falling as rows are laid closer,
+/// means the rows are made of islands: trying closer still is given up.
+const ISLAND_PIECES_PER_ROW: usize = 2;
+
 /// Rows overlap by at most this share of the band: beyond it, a row would
 /// hide more than half of its neighbour.
 const MAX_OVERLAP: f64 = 0.5;
@@ -152,20 +156,28 @@ pub fn make_shade(
     let mut layout = shade.clone();
     // Rows fuse only where both hold material in their overlap. When one
     // piece is asked for and they do not fuse, they are laid closer.
+    let mut pieces_before = usize::MAX;
     let (rows, wrapped) = loop {
         let (rows, wrapped) = made_rows(exemplar, &layout, settings, control, &mut timings)?;
-        let apart = wrapped.topology.components > 1 && settings.components == Target::Exactly(1);
+        let pieces = wrapped.topology.components;
+        let apart = pieces > 1 && settings.components == Target::Exactly(1);
         let closer = layout.row_overlap_mm + OVERLAP_STEP * settings.band_mm;
         if !apart {
             break (rows, wrapped);
         }
-        if closer > MAX_OVERLAP * settings.band_mm {
+        // Rows made of islands (more than two pieces a row) stay apart
+        // however close they are laid: when laying them closer joined
+        // nothing, the next try would not either. Rows merely slow to fuse
+        // (a few pieces) get every try.
+        let islands = pieces > ISLAND_PIECES_PER_ROW * rows.len() && pieces >= pieces_before;
+        if closer > MAX_OVERLAP * settings.band_mm || islands {
             return Err(ShadeSynthesisError::Apart {
                 components: wrapped.topology.components,
                 overlap_mm: layout.row_overlap_mm,
             });
         }
         layout.row_overlap_mm = closer;
+        pieces_before = pieces;
     };
     for (synthesis, _) in &rows {
         for w in &synthesis.warnings {
