@@ -24,6 +24,8 @@
 //!   made of its rows.
 //! - [`raster_brush`]: bitmap exemplars synthesized along curves without
 //!   distortion, traced into printable outlines.
+//! - [`region_fill`]: regions filled with continuous curve textures (its
+//!   first stages: curve exemplars, sample graphs, robust matching).
 //!
 //! Geometry uses `u` along the pattern and `v` across it, up (band space);
 //! the plane is in millimetres, `y` up.
@@ -39,6 +41,7 @@ pub mod print;
 pub mod product;
 pub mod quality;
 pub mod raster_brush;
+pub mod region_fill;
 pub mod report;
 pub mod surface;
 pub mod vector_brush;

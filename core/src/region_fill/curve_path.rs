@@ -1,0 +1,81 @@
+//! [`CurvePath`]: one stroked path of a curve exemplar, flattened.
+
+use glam::DVec2;
+
+/// A path as a polyline, mm, `y` up.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct CurvePath {
+    /// The points in order.
+    pub points_mm: Vec<DVec2>,
+    /// Whether the path closes back to its first point.
+    pub closed: bool,
+}
+
+impl CurvePath {
+    /// Straight pieces: one fewer than the points, or as many for a loop.
+    ///
+    /// ```
+    /// use tracery_core::DVec2;
+    /// use tracery_core::region_fill::CurvePath;
+    /// let square = vec![DVec2::ZERO, DVec2::X, DVec2::ONE, DVec2::Y];
+    /// assert_eq!(CurvePath { points_mm: square.clone(), closed: true }.segment_count(), 4);
+    /// assert_eq!(CurvePath { points_mm: square, closed: false }.segment_count(), 3);
+    /// ```
+    pub fn segment_count(&self) -> usize {
+        match (self.points_mm.len(), self.closed) {
+            (0 | 1, _) => 0,
+            (n, true) => n,
+            (n, false) => n - 1,
+        }
+    }
+
+    /// The point a share `t` along segment `i`.
+    pub fn segment_point(&self, i: usize, t: f64) -> DVec2 {
+        let n = self.points_mm.len();
+        let (a, b) = (self.points_mm[i % n], self.points_mm[(i + 1) % n]);
+        a + (b - a) * t
+    }
+
+    /// Length of segment `i`, mm.
+    pub fn segment_length(&self, i: usize) -> f64 {
+        self.segment_point(i, 0.0).distance(self.segment_point(i, 1.0))
+    }
+
+    /// Arc length at the start of each segment, and the total last.
+    pub fn cumulative_lengths(&self) -> Vec<f64> {
+        let mut out = Vec::with_capacity(self.segment_count() + 1);
+        let mut s = 0.0;
+        out.push(0.0);
+        for i in 0..self.segment_count() {
+            s += self.segment_length(i);
+            out.push(s);
+        }
+        out
+    }
+
+    /// Length, mm.
+    pub fn length_mm(&self) -> f64 {
+        (0..self.segment_count()).map(|i| self.segment_length(i)).sum()
+    }
+
+    /// The point at arc length `s` (wrapping round a loop).
+    ///
+    /// ```
+    /// use tracery_core::DVec2;
+    /// use tracery_core::region_fill::CurvePath;
+    /// let square = CurvePath { points_mm: vec![DVec2::ZERO, DVec2::X, DVec2::ONE, DVec2::Y], closed: true };
+    /// assert!(square.point_at(5.5).distance(DVec2::new(1.0, 0.5)) < 1e-12);
+    /// ```
+    pub fn point_at(&self, s: f64) -> DVec2 {
+        let total = self.length_mm();
+        let mut s = if self.closed && total > 0.0 { s.rem_euclid(total) } else { s.clamp(0.0, total) };
+        for i in 0..self.segment_count() {
+            let length = self.segment_length(i);
+            if s <= length || i + 1 == self.segment_count() {
+                return self.segment_point(i, if length > 0.0 { (s / length).min(1.0) } else { 0.0 });
+            }
+            s -= length;
+        }
+        self.points_mm.first().copied().unwrap_or_default()
+    }
+}

@@ -1,0 +1,34 @@
+//! Region fill with continuous curve textures (the curve-texture paper):
+//! a region filled with a pattern of connected curves learned from a curve
+//! exemplar. This is the first stage: curve exemplars ([`CurvePath`],
+//! [`builtin_curves`]), their sample graphs at three levels
+//! ([`SampleGraph`], [`hierarchy`]) and the robust matching of sample
+//! neighbourhoods ([`robust_match`]) that the search and assignment steps
+//! are built on.
+
+mod builtin;
+mod curve_path;
+mod matching;
+mod sample_graph;
+
+pub use builtin::{BUILTIN_CURVES, builtin_curves};
+pub use curve_path::CurvePath;
+pub use matching::{Matching, robust_match};
+pub use sample_graph::{JOIN_TOLERANCE_MM, MAX_SEGMENTS, Sample, SampleError, SampleGraph, SampleKind};
+
+/// Levels of the sample hierarchy, coarse to fine.
+pub const LEVELS: usize = 3;
+
+/// The sample graphs of `paths` from coarse to fine: spacing `4δ`, `2δ`
+/// and `δ`. Ends and junctions are samples at every level.
+///
+/// ```
+/// use tracery_core::region_fill::{builtin_curves, hierarchy};
+/// let levels = hierarchy(&builtin_curves("waves").unwrap(), 1.0).unwrap();
+/// assert!(levels[0].samples.len() < levels[1].samples.len());
+/// assert!(levels[1].samples.len() < levels[2].samples.len());
+/// ```
+pub fn hierarchy(paths: &[CurvePath], delta_mm: f64) -> Result<[SampleGraph; LEVELS], SampleError> {
+    let at = |k: i32| SampleGraph::new(paths, delta_mm * 2f64.powi(k));
+    Ok([at(2)?, at(1)?, at(0)?])
+}

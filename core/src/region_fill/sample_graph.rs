@@ -1,0 +1,309 @@
+//! [`SampleGraph`]: a curve pattern as point samples joined by edges (section
+//! 4.1 of the curve-texture paper): samples where paths meet or cross, at
+//! path ends, and every `δ` along paths, each with the tangent directions of
+//! the paths through it.
+
+use glam::DVec2;
+use smallvec::SmallVec;
+
+use super::CurvePath;
+use crate::disjoint_sets::DisjointSets;
+
+/// What a sample is, by the number of its edges.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum SampleKind {
+    /// The end of a path (one edge).
+    End,
+    /// A sample along a path (two edges, opposite directions).
+    Path,
+    /// Where three or more path branches meet (a crossing has four).
+    Junction,
+}
+
+/// One sample of a pattern.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Sample {
+    /// Position, mm.
+    pub position_mm: DVec2,
+    /// The direction of each path branch leaving the sample, radians in
+    /// `[0, 2π)`: one per edge in an exemplar.
+    pub orientations: SmallVec<[f64; 4]>,
+    /// Confidence that the sample exists, `0..=1` (1 in an exemplar).
+    pub existence: f64,
+}
+
+/// A pattern's samples and the edges between them.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct SampleGraph {
+    /// The samples.
+    pub samples: Vec<Sample>,
+    /// Each sample's neighbours along the paths.
+    pub neighbours: Vec<SmallVec<[u32; 4]>>,
+}
+
+/// Points closer than this are one point when paths are cut where they
+/// meet, mm: a path drawn to end on another is taken to join it.
+pub const JOIN_TOLERANCE_MM: f64 = 0.05;
+
+/// Why a pattern could not be sampled.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+#[non_exhaustive]
+pub enum SampleError {
+    /// The spacing is not a positive length.
+    #[error("the sample spacing must be a positive number of millimetres, not {0}")]
+    Spacing(f64),
+    /// Too many segments to find where they cross in reasonable time.
+    #[error("the curve exemplar has {segments} straight pieces; at most {limit} are sampled: simplify it")]
+    TooLarge {
+        /// Segments found.
+        segments: usize,
+        /// The most allowed.
+        limit: usize,
+    },
+}
+
+/// Most segments whose crossings are searched (pairwise, pruned by boxes).
+pub const MAX_SEGMENTS: usize = 20_000;
+
+/// A cut of a path: where, as the index of its segment and the share along
+/// it, and which junction point it belongs to.
+#[derive(Clone, Copy, Debug)]
+struct Cut {
+    segment: usize,
+    t: f64,
+    point: usize,
+}
+
+impl SampleGraph {
+    /// Samples `paths` every `delta_mm` at most along each stretch between
+    /// cuts (ends, crossings, and ends that touch another path).
+    ///
+    /// ```
+    /// use tracery_core::DVec2;
+    /// use tracery_core::region_fill::{CurvePath, SampleGraph, SampleKind};
+    /// // Two lines crossing in a plus sign.
+    /// let line = |a: DVec2, b: DVec2| CurvePath { points_mm: vec![a, b], closed: false };
+    /// let plus = [line(DVec2::new(-5.0, 0.0), DVec2::new(5.0, 0.0)), line(DVec2::new(0.0, -5.0), DVec2::new(0.0, 5.0))];
+    /// let graph = SampleGraph::new(&plus, 1.0).unwrap();
+    /// let junctions = (0..graph.samples.len()).filter(|&s| graph.kind(s) == SampleKind::Junction).count();
+    /// assert_eq!(junctions, 1);
+    /// assert_eq!(graph.samples.len(), 21);
+    /// ```
+    pub fn new(paths: &[CurvePath], delta_mm: f64) -> Result<SampleGraph, SampleError> {
+        if !(delta_mm.is_finite() && delta_mm > 0.0) {
+            return Err(SampleError::Spacing(delta_mm));
+        }
+        let paths: Vec<&CurvePath> = paths.iter().filter(|p| p.points_mm.len() >= 2).collect();
+        let segments: usize = paths.iter().map(|p| p.segment_count()).sum();
+        if segments > MAX_SEGMENTS {
+            return Err(SampleError::TooLarge { segments, limit: MAX_SEGMENTS });
+        }
+        let (cuts, points) = find_cuts(&paths);
+        let mut graph = SampleGraph::default();
+        // Junction points become samples first, shared by every path through them.
+        let mut point_sample = vec![u32::MAX; points.len()];
+        for (path_index, path) in paths.iter().enumerate() {
+            let mut path_cuts: Vec<Cut> = cuts[path_index].clone();
+            path_cuts
+                .sort_by(|a, b| (a.segment, a.t).partial_cmp(&(b.segment, b.t)).unwrap_or(std::cmp::Ordering::Equal));
+            path_cuts.dedup_by(|a, b| a.point == b.point && a.segment == b.segment);
+            graph.sample_path(path, &path_cuts, &points, &mut point_sample, delta_mm);
+        }
+        Ok(graph)
+    }
+
+    /// How many edges sample `s` has, as a kind.
+    pub fn kind(&self, s: usize) -> SampleKind {
+        match self.neighbours[s].len() {
+            0 | 1 => SampleKind::End,
+            2 => SampleKind::Path,
+            _ => SampleKind::Junction,
+        }
+    }
+
+    /// The edges, each once, as pairs of sample indices (smaller first).
+    pub fn edges(&self) -> Vec<[u32; 2]> {
+        let mut out = Vec::new();
+        for (s, around) in self.neighbours.iter().enumerate() {
+            out.extend(around.iter().filter(|&&n| n as usize > s).map(|&n| [s as u32, n]));
+        }
+        out
+    }
+
+    fn add_sample(&mut self, position_mm: DVec2) -> u32 {
+        self.samples.push(Sample { position_mm, orientations: SmallVec::new(), existence: 1.0 });
+        self.neighbours.push(SmallVec::new());
+        (self.samples.len() - 1) as u32
+    }
+
+    /// Joins `a` and `b`, recording at each the direction toward the other.
+    fn join(&mut self, a: u32, b: u32) {
+        if a == b || self.neighbours[a as usize].contains(&b) {
+            return;
+        }
+        let d = self.samples[b as usize].position_mm - self.samples[a as usize].position_mm;
+        let angle = |v: DVec2| v.y.atan2(v.x).rem_euclid(std::f64::consts::TAU);
+        self.samples[a as usize].orientations.push(angle(d));
+        self.samples[b as usize].orientations.push(angle(-d));
+        self.neighbours[a as usize].push(b);
+        self.neighbours[b as usize].push(a);
+    }
+
+    /// The sample of junction point `point`, made on first use.
+    fn point_sample(&mut self, point: usize, points: &[DVec2], point_sample: &mut [u32]) -> u32 {
+        if point_sample[point] == u32::MAX {
+            point_sample[point] = self.add_sample(points[point]);
+        }
+        point_sample[point]
+    }
+
+    /// Samples one path between its cuts (sorted along it).
+    fn sample_path(
+        &mut self,
+        path: &CurvePath,
+        cuts: &[Cut],
+        points: &[DVec2],
+        point_sample: &mut [u32],
+        delta_mm: f64,
+    ) {
+        // Stretches between consecutive cuts; a closed path wraps from its last cut to its first.
+        let mut stops: Vec<(f64, u32)> = Vec::new();
+        let lengths = path.cumulative_lengths();
+        for cut in cuts {
+            let s = lengths[cut.segment] + cut.t * path.segment_length(cut.segment);
+            let sample = self.point_sample(cut.point, points, point_sample);
+            stops.push((s, sample));
+        }
+        let total = *lengths.last().unwrap_or(&0.0);
+        if path.closed && stops.is_empty() {
+            // A loop touching nothing: one stretch all around from its start.
+            let first = self.add_sample(path.points_mm[0]);
+            self.sample_stretch(path, 0.0, total, first, first, delta_mm);
+            return;
+        }
+        if path.closed {
+            let (s0, first) = stops[0];
+            stops.push((s0 + total, first));
+        }
+        for pair in stops.windows(2) {
+            let ((from, a), (to, b)) = (pair[0], pair[1]);
+            // Cuts a hair apart at one point (an end near its own path's
+            // first segments, as at a spiral's tight centre) leave no loop.
+            let loop_back = a == b && to - from <= 4.0 * JOIN_TOLERANCE_MM;
+            if !loop_back && (to - from > 1e-12 || a != b) {
+                self.sample_stretch(path, from, to, a, b, delta_mm);
+            }
+        }
+    }
+
+    /// Samples the stretch of `path` from arc length `from` to `to` (past
+    /// the total for a loop) between samples `a` and `b`.
+    fn sample_stretch(&mut self, path: &CurvePath, from: f64, to: f64, a: u32, b: u32, delta_mm: f64) {
+        let intervals = ((to - from) / delta_mm).ceil().max(1.0) as usize;
+        // A loop through one point needs at least three samples to be a loop.
+        let intervals = if a == b { intervals.max(3) } else { intervals };
+        let mut previous = a;
+        for k in 1..intervals {
+            let s = from + (to - from) * k as f64 / intervals as f64;
+            let next = self.add_sample(path.point_at(s));
+            self.join(previous, next);
+            previous = next;
+        }
+        self.join(previous, b);
+    }
+}
+
+/// Where paths must be cut: their ends, where they cross, and where an end
+/// touches another path; all such points merged within
+/// [`JOIN_TOLERANCE_MM`]. Returns the cuts per path and the points.
+fn find_cuts(paths: &[&CurvePath]) -> (Vec<Vec<Cut>>, Vec<DVec2>) {
+    let mut raw: Vec<(usize, Cut, DVec2)> = Vec::new();
+    for (p, path) in paths.iter().enumerate() {
+        if !path.closed {
+            let last = path.segment_count() - 1;
+            raw.push((p, Cut { segment: 0, t: 0.0, point: 0 }, path.points_mm[0]));
+            raw.push((p, Cut { segment: last, t: 1.0, point: 0 }, *path.points_mm.last().unwrap_or(&DVec2::ZERO)));
+        }
+    }
+    let segments: Vec<(usize, usize, DVec2, DVec2)> = paths
+        .iter()
+        .enumerate()
+        .flat_map(|(p, path)| {
+            (0..path.segment_count()).map(move |i| (p, i, path.segment_point(i, 0.0), path.segment_point(i, 1.0)))
+        })
+        .collect();
+    // Crossings, pairwise with a box test; neighbouring segments of one path meet at their shared vertex, not a crossing.
+    for (i, &(pa, ia, a0, a1)) in segments.iter().enumerate() {
+        for &(pb, ib, b0, b1) in &segments[i + 1..] {
+            if pa == pb && (ib == ia + 1 || (paths[pa].closed && ia == 0 && ib == paths[pa].segment_count() - 1)) {
+                continue;
+            }
+            if a0.max(a1).cmplt(b0.min(b1) - JOIN_TOLERANCE_MM).any()
+                || b0.max(b1).cmplt(a0.min(a1) - JOIN_TOLERANCE_MM).any()
+            {
+                continue;
+            }
+            if let Some((t, u)) = crossing(a0, a1, b0, b1) {
+                let at = a0 + (a1 - a0) * t;
+                raw.push((pa, Cut { segment: ia, t, point: 0 }, at));
+                raw.push((pb, Cut { segment: ib, t: u, point: 0 }, at));
+            }
+        }
+    }
+    // An end touching another path (a T-junction) cuts that path where it touches.
+    let ends: Vec<DVec2> = raw.iter().map(|r| r.2).collect();
+    for end in ends {
+        for &(p, i, a, b) in &segments {
+            let t = ((end - a).dot(b - a) / (b - a).length_squared().max(1e-300)).clamp(0.0, 1.0);
+            if (a + (b - a) * t).distance(end) <= JOIN_TOLERANCE_MM {
+                raw.push((p, Cut { segment: i, t, point: 0 }, a + (b - a) * t));
+            }
+        }
+    }
+    // Merge points within the tolerance (pairwise on a grid of cells the tolerance wide).
+    let mut sets = DisjointSets::new(raw.len());
+    let cell = |p: DVec2| ((p.x / JOIN_TOLERANCE_MM).floor() as i64, (p.y / JOIN_TOLERANCE_MM).floor() as i64);
+    let mut grid: rustc_hash::FxHashMap<(i64, i64), Vec<usize>> = Default::default();
+    for (k, r) in raw.iter().enumerate() {
+        grid.entry(cell(r.2)).or_default().push(k);
+    }
+    for (k, r) in raw.iter().enumerate() {
+        let (cx, cy) = cell(r.2);
+        for dx in -1..=1 {
+            for dy in -1..=1 {
+                for &other in grid.get(&(cx + dx, cy + dy)).map_or(&[][..], |v| &v[..]) {
+                    if raw[other].2.distance(r.2) <= JOIN_TOLERANCE_MM {
+                        sets.join(k, other);
+                    }
+                }
+            }
+        }
+    }
+    let mut point_of_root = rustc_hash::FxHashMap::default();
+    let mut points = Vec::new();
+    let mut cuts = vec![Vec::new(); paths.len()];
+    for (k, (p, mut cut, at)) in raw.into_iter().enumerate() {
+        let root = sets.find(k);
+        cut.point = *point_of_root.entry(root).or_insert_with(|| {
+            points.push(at);
+            points.len() - 1
+        });
+        cuts[p].push(cut);
+    }
+    (cuts, points)
+}
+
+/// Where segments `a0a1` and `b0b1` cross, as the shares along each, if
+/// they cross properly (not merely touching at an end, which the T-junction
+/// pass handles, nor running parallel).
+fn crossing(a0: DVec2, a1: DVec2, b0: DVec2, b1: DVec2) -> Option<(f64, f64)> {
+    let (da, db) = (a1 - a0, b1 - b0);
+    let denom = da.perp_dot(db);
+    if denom.abs() <= 1e-12 * da.length() * db.length() {
+        return None;
+    }
+    let t = (b0 - a0).perp_dot(db) / denom;
+    let u = (b0 - a0).perp_dot(da) / denom;
+    let inside = |x: f64| x > 1e-9 && x < 1.0 - 1e-9;
+    (inside(t) && inside(u)).then_some((t, u))
+}

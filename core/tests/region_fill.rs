@@ -1,0 +1,157 @@
+//! Region fill's first stages, checked by brute force and by the paths
+//! themselves: robust matching against every partial assignment, and the
+//! built-ins' sample graphs against their polylines.
+
+use glam::DVec2;
+use tracery_core::region_fill::{
+    BUILTIN_CURVES, CurvePath, JOIN_TOLERANCE_MM, SampleGraph, SampleKind, builtin_curves, hierarchy, robust_match,
+};
+
+/// SplitMix64, for reproducible random costs.
+fn random(seed: &mut u64) -> f64 {
+    *seed = seed.wrapping_add(0x9e37_79b9_7f4a_7c15);
+    let mut z = *seed;
+    z = (z ^ (z >> 30)).wrapping_mul(0xbf58_476d_1ce4_e5b9);
+    z = (z ^ (z >> 27)).wrapping_mul(0x94d0_49bb_1331_11eb);
+    ((z ^ (z >> 31)) >> 11) as f64 / (1u64 << 53) as f64
+}
+
+/// The cheapest cost over every way of matching each output to a distinct
+/// input or to nothing.
+fn brute_force(outputs: usize, inputs: usize, cost: &dyn Fn(usize, usize) -> f64, unmatched: &[f64]) -> f64 {
+    fn go(o: usize, used: &mut Vec<bool>, n: usize, cost: &dyn Fn(usize, usize) -> f64, unmatched: &[f64]) -> f64 {
+        if o == n {
+            return 0.0;
+        }
+        let mut best = unmatched[o] + go(o + 1, used, n, cost, unmatched);
+        for i in 0..used.len() {
+            if !used[i] {
+                used[i] = true;
+                best = best.min(cost(o, i) + go(o + 1, used, n, cost, unmatched));
+                used[i] = false;
+            }
+        }
+        best
+    }
+    go(0, &mut vec![false; inputs], outputs, cost, unmatched)
+}
+
+#[test]
+fn robust_matching_is_as_cheap_as_a_brute_force_on_tiny_neighbourhoods() {
+    let mut seed = 7;
+    for case in 0..400 {
+        let (outputs, inputs) = (case % 5, (case / 5) % 5);
+        let costs: Vec<Vec<f64>> = (0..outputs)
+            .map(|_| {
+                (0..inputs)
+                    .map(|_| {
+                        let c = 3.0 * random(&mut seed);
+                        // Now and then a forbidden pair (samples of different kinds).
+                        if random(&mut seed) < 0.15 { f64::INFINITY } else { c }
+                    })
+                    .collect()
+            })
+            .collect();
+        let unmatched: Vec<f64> = (0..outputs).map(|_| 0.5 + 2.0 * random(&mut seed)).collect();
+        let cost = |o: usize, i: usize| costs[o][i];
+        let m = robust_match(outputs, inputs, &cost, &unmatched);
+        let best = brute_force(outputs, inputs, &cost, &unmatched);
+        assert!((m.cost - best).abs() < 1e-5, "case {case}: matched {} but the best is {best}", m.cost);
+        // A valid matching: each input at most once, and no forbidden pair.
+        let mut used: Vec<usize> = m.input_of.iter().flatten().copied().collect();
+        used.sort_unstable();
+        used.dedup();
+        assert_eq!(used.len(), m.input_of.iter().flatten().count(), "case {case}");
+        assert!(m.input_of.iter().enumerate().all(|(o, i)| i.is_none_or(|i| costs[o][i].is_finite())));
+    }
+}
+
+/// Distance from `p` to the nearest of `paths`, mm.
+fn to_paths(paths: &[CurvePath], p: DVec2) -> f64 {
+    let mut best = f64::MAX;
+    for path in paths {
+        for i in 0..path.segment_count() {
+            let (a, b) = (path.segment_point(i, 0.0), path.segment_point(i, 1.0));
+            let t = ((p - a).dot(b - a) / (b - a).length_squared().max(1e-300)).clamp(0.0, 1.0);
+            best = best.min((a + (b - a) * t).distance(p));
+        }
+    }
+    best
+}
+
+#[test]
+fn the_built_ins_sample_graphs_follow_their_paths() {
+    let delta_mm = 1.0;
+    for name in BUILTIN_CURVES {
+        let paths = builtin_curves(name).unwrap();
+        let graph = SampleGraph::new(&paths, delta_mm).unwrap();
+        assert!(graph.samples.len() > 50, "{name}: {} samples", graph.samples.len());
+        for (s, sample) in graph.samples.iter().enumerate() {
+            let off = to_paths(&paths, sample.position_mm);
+            assert!(off <= JOIN_TOLERANCE_MM, "{name}: sample {s} is {off} mm off the paths");
+            // In an exemplar each edge has its direction, and nothing else.
+            assert_eq!(sample.orientations.len(), graph.neighbours[s].len(), "{name}: sample {s}");
+        }
+        let edges = graph.edges();
+        let longest = edges
+            .iter()
+            .map(|[a, b]| graph.samples[*a as usize].position_mm.distance(graph.samples[*b as usize].position_mm))
+            .fold(0.0, f64::max);
+        assert!(longest <= delta_mm + 2.0 * JOIN_TOLERANCE_MM, "{name}: an edge is {longest} mm long");
+        // The edges follow the paths: their length is the paths' less what chords cut off.
+        let drawn: f64 = paths.iter().map(CurvePath::length_mm).sum();
+        let sampled: f64 = edges
+            .iter()
+            .map(|[a, b]| graph.samples[*a as usize].position_mm.distance(graph.samples[*b as usize].position_mm))
+            .sum();
+        assert!(sampled <= drawn + 1e-6 && sampled > 0.9 * drawn, "{name}: edges {sampled:.1} mm, paths {drawn:.1} mm");
+        // Ends: every open path end that touches no other path, counted on the polylines.
+        let free_ends = paths
+            .iter()
+            .enumerate()
+            .filter(|(_, p)| !p.closed)
+            .flat_map(|(k, p)| [(k, p.points_mm[0]), (k, *p.points_mm.last().unwrap())])
+            .filter(|&(k, end)| {
+                let others: Vec<CurvePath> =
+                    paths.iter().enumerate().filter(|(j, _)| *j != k).map(|(_, p)| p.clone()).collect();
+                to_paths(&others, end) > JOIN_TOLERANCE_MM
+            })
+            .count();
+        let ends = (0..graph.samples.len()).filter(|&s| graph.kind(s) == SampleKind::End).count();
+        assert_eq!(ends, free_ends, "{name}");
+    }
+}
+
+#[test]
+fn crossings_and_touching_ends_are_junctions() {
+    let line =
+        |a: (f64, f64), b: (f64, f64)| CurvePath { points_mm: vec![DVec2::from(a), DVec2::from(b)], closed: false };
+    // A plus: one junction of four branches; a T: one of three, the stem's end on the bar.
+    let plus = SampleGraph::new(&[line((-5.0, 0.0), (5.0, 0.0)), line((0.0, -5.0), (0.0, 5.0))], 1.0).unwrap();
+    let degrees = |g: &SampleGraph| {
+        let mut d: Vec<usize> = g.neighbours.iter().map(|n| n.len()).filter(|&n| n > 2).collect();
+        d.sort_unstable();
+        d
+    };
+    assert_eq!(degrees(&plus), vec![4]);
+    let tee = SampleGraph::new(&[line((-5.0, 0.0), (5.0, 0.0)), line((1.0, 5.0), (1.0, 0.02))], 1.0).unwrap();
+    assert_eq!(degrees(&tee), vec![3]);
+    // A loop touching nothing is sampled all round, every sample with two edges.
+    let square = CurvePath {
+        points_mm: vec![DVec2::ZERO, DVec2::new(4.0, 0.0), DVec2::new(4.0, 4.0), DVec2::new(0.0, 4.0)],
+        closed: true,
+    };
+    let ring = SampleGraph::new(&[square], 1.0).unwrap();
+    assert_eq!(ring.samples.len(), 16);
+    assert!(ring.neighbours.iter().all(|n| n.len() == 2));
+}
+
+#[test]
+fn coarser_levels_keep_every_end_and_junction() {
+    for name in BUILTIN_CURVES {
+        let levels = hierarchy(&builtin_curves(name).unwrap(), 1.0).unwrap();
+        let special = |g: &SampleGraph| (0..g.samples.len()).filter(|&s| g.kind(s) != SampleKind::Path).count();
+        assert_eq!(special(&levels[0]), special(&levels[2]), "{name}");
+        assert!(levels[0].samples.len() * 2 < levels[2].samples.len(), "{name}");
+    }
+}
