@@ -155,3 +155,63 @@ fn coarser_levels_keep_every_end_and_junction() {
         assert!(levels[0].samples.len() * 2 < levels[2].samples.len(), "{name}");
     }
 }
+
+#[test]
+fn a_neighbourhood_matches_itself_anywhere_and_differs_from_another_pattern() {
+    use tracery_core::region_fill::{SampleGrid, Similarity, neighbourhood_distance};
+    let (delta_mm, radius_mm) = (1.5, 4.5);
+    let similarity = Similarity::new(delta_mm);
+    let crackle = SampleGraph::new(&builtin_curves("crackle").unwrap(), delta_mm).unwrap();
+    // The same pattern moved far away: offsets from the centres are the same.
+    let moved_paths: Vec<CurvePath> = builtin_curves("crackle")
+        .unwrap()
+        .into_iter()
+        .map(|p| CurvePath { points_mm: p.points_mm.iter().map(|q| *q + DVec2::new(300.0, -120.0)).collect(), ..p })
+        .collect();
+    let moved = SampleGraph::new(&moved_paths, delta_mm).unwrap();
+    let (grid, moved_grid) = (SampleGrid::new(&crackle, radius_mm), SampleGrid::new(&moved, radius_mm));
+    let waves = SampleGraph::new(&builtin_curves("waves").unwrap(), delta_mm).unwrap();
+    let waves_grid = SampleGrid::new(&waves, radius_mm);
+    let junction = (0..crackle.samples.len()).find(|&s| crackle.kind(s) == SampleKind::Junction).unwrap();
+    for s in [junction, 10, 100, 200] {
+        let centre = crackle.samples[s].position_mm;
+        let members = grid.within(&crackle, centre, radius_mm);
+        assert!(members.len() >= 5, "sample {s}: {} neighbours", members.len());
+        let itself = neighbourhood_distance(&crackle, s, &members, &crackle, s, &members, &similarity);
+        assert!(itself.cost < 1e-9, "sample {s} against itself: {}", itself.cost);
+        assert!(itself.input_of.iter().enumerate().all(|(o, i)| *i == Some(o)), "each sample is matched to itself");
+        // The moved copy: the same sample there, found by position.
+        let twin = moved_grid.within(&moved, centre + DVec2::new(300.0, -120.0), 1e-6)[0] as usize;
+        let twin_members = moved_grid.within(&moved, moved.samples[twin].position_mm, radius_mm);
+        let across = neighbourhood_distance(&crackle, s, &members, &moved, twin, &twin_members, &similarity);
+        assert!(across.cost < 1e-6, "sample {s} against its moved twin: {}", across.cost);
+        // No neighbourhood of the waves is as like a crack's as itself.
+        let best_wave = (0..waves.samples.len())
+            .map(|w| {
+                let wm = waves_grid.within(&waves, waves.samples[w].position_mm, radius_mm);
+                neighbourhood_distance(&crackle, s, &members, &waves, w, &wm, &similarity).cost
+            })
+            .fold(f64::MAX, f64::min);
+        assert!(best_wave > 0.1 * delta_mm, "sample {s}: a wave neighbourhood costs only {best_wave}");
+    }
+    // At the junction the waves have nothing alike: it costs more than along a crack.
+    let at = |s: usize| {
+        let members = grid.within(&crackle, crackle.samples[s].position_mm, radius_mm);
+        (0..waves.samples.len())
+            .map(|w| {
+                let wm = waves_grid.within(&waves, waves.samples[w].position_mm, radius_mm);
+                neighbourhood_distance(&crackle, s, &members, &waves, w, &wm, &similarity).cost
+            })
+            .fold(f64::MAX, f64::min)
+    };
+    let along = (0..crackle.samples.len())
+        .find(|&s| {
+            crackle.kind(s) == SampleKind::Path
+                && grid
+                    .within(&crackle, crackle.samples[s].position_mm, radius_mm)
+                    .iter()
+                    .all(|&n| crackle.kind(n as usize) == SampleKind::Path)
+        })
+        .unwrap();
+    assert!(at(junction) > at(along), "junction {} vs along a crack {}", at(junction), at(along));
+}

@@ -2,18 +2,20 @@
 //! a region filled with a pattern of connected curves learned from a curve
 //! exemplar. This is the first stage: curve exemplars ([`CurvePath`],
 //! [`builtin_curves`]), their sample graphs at three levels
-//! ([`SampleGraph`], [`hierarchy`]) and the robust matching of sample
-//! neighbourhoods ([`robust_match`]) that the search and assignment steps
-//! are built on.
+//! ([`SampleGraph`], [`hierarchy`]), and the similarity of neighbourhoods
+//! ([`SampleGrid`], [`neighbourhood_distance`]) by robust matching
+//! ([`robust_match`]), which the search and assignment steps are built on.
 
 mod builtin;
 mod curve_path;
 mod matching;
+mod neighbourhood;
 mod sample_graph;
 
 pub use builtin::{BUILTIN_CURVES, builtin_curves};
 pub use curve_path::CurvePath;
 pub use matching::{Matching, robust_match};
+pub use neighbourhood::{EDGE_WEIGHT, SampleGrid, Similarity, edge_difference, neighbourhood_distance, unmatched_cost};
 pub use sample_graph::{JOIN_TOLERANCE_MM, MAX_SEGMENTS, Sample, SampleError, SampleGraph, SampleKind};
 
 /// Levels of the sample hierarchy, coarse to fine.
