@@ -215,3 +215,40 @@ fn a_neighbourhood_matches_itself_anywhere_and_differs_from_another_pattern() {
         .unwrap();
     assert!(at(junction) > at(along), "junction {} vs along a crack {}", at(junction), at(along));
 }
+
+#[test]
+fn patch_match_finds_each_sample_of_a_moved_copy() {
+    use tracery_core::region_fill::{SearchSettings, search};
+    // Not a whole number of spacings: samples right on the rim would be in
+    // one neighbourhood and out of its moved twin by a rounding.
+    let (delta_mm, radius_mm) = (1.5, 4.7);
+    for name in ["crackle", "vine"] {
+        let paths = builtin_curves(name).unwrap();
+        let input = SampleGraph::new(&paths, delta_mm).unwrap();
+        // The input's own graph moved (not sampled again, which could decide
+        // a borderline join differently and test the sampler instead).
+        let shift = DVec2::new(500.0, 70.0);
+        let mut output = input.clone();
+        for sample in &mut output.samples {
+            sample.position_mm += shift;
+        }
+        let settings = SearchSettings::new(radius_mm, delta_mm);
+        let field = search(&output, &input, None, &settings);
+        assert_eq!(field.input_of.len(), output.samples.len());
+        // Found: matched to the very sample it was copied from, or to one
+        // whose neighbourhood is as alike (along a smooth stem many are):
+        // the twin costs 0.
+        let twin = (0..output.samples.len())
+            .filter(|&o| {
+                let i = field.input_of[o] as usize;
+                input.samples[i].position_mm.distance(output.samples[o].position_mm - shift) < 1e-6
+            })
+            .count();
+        let found = field.cost.iter().filter(|&&c| c < 1e-6).count();
+        let share = found as f64 / output.samples.len() as f64;
+        eprintln!("{name}: of {} samples, {twin} matched their twin, {found} one as alike", output.samples.len());
+        assert!(share > 0.9, "{name}: only {:.0}% found", 100.0 * share);
+        let mean = field.cost.iter().sum::<f64>() / field.cost.len() as f64;
+        assert!(mean < 0.1 * delta_mm, "{name}: mean neighbourhood distance {mean}");
+    }
+}

@@ -4,19 +4,21 @@
 //! [`builtin_curves`]), their sample graphs at three levels
 //! ([`SampleGraph`], [`hierarchy`]), and the similarity of neighbourhoods
 //! ([`SampleGrid`], [`neighbourhood_distance`]) by robust matching
-//! ([`robust_match`]), which the search and assignment steps are built on.
+//! ([`robust_match`]), and the PatchMatch search step ([`search`]).
 
 mod builtin;
 mod curve_path;
 mod matching;
 mod neighbourhood;
 mod sample_graph;
+mod search;
 
 pub use builtin::{BUILTIN_CURVES, builtin_curves};
 pub use curve_path::CurvePath;
 pub use matching::{Matching, robust_match};
 pub use neighbourhood::{EDGE_WEIGHT, SampleGrid, Similarity, edge_difference, neighbourhood_distance, unmatched_cost};
 pub use sample_graph::{JOIN_TOLERANCE_MM, MAX_SEGMENTS, Sample, SampleError, SampleGraph, SampleKind};
+pub use search::{NearestField, SearchSettings, search};
 
 /// Levels of the sample hierarchy, coarse to fine.
 pub const LEVELS: usize = 3;

@@ -1,0 +1,202 @@
+//! The search step (section 4.3.3 of the curve-texture paper): for every
+//! output sample, the input sample whose neighbourhood is most alike, found
+//! approximately by PatchMatch over a graph of nearest output samples.
+
+use glam::DVec2;
+
+use super::{SampleGraph, SampleGrid, Similarity, neighbourhood_distance};
+
+/// How the search runs.
+#[derive(Clone, Copy, Debug, PartialEq)]
+#[non_exhaustive]
+pub struct SearchSettings {
+    /// Neighbourhood radius, mm.
+    pub radius_mm: f64,
+    /// Sample spacing at this level, mm.
+    pub delta_mm: f64,
+    /// Passes of propagation and random search.
+    pub iterations: usize,
+    /// Output samples each one takes candidates from (the paper's k).
+    pub nearest: usize,
+    /// The random search's first window, as a share of the input's size;
+    /// it halves down to [`SearchSettings::min_window_share`].
+    pub max_window_share: f64,
+    /// The random search's last window, as a share of the input's size.
+    pub min_window_share: f64,
+    /// Seed of the random choices.
+    pub seed: u64,
+}
+
+impl SearchSettings {
+    /// The paper's settings (k = 8; windows 150 down to 25 on inputs
+    /// about 300 wide) for neighbourhoods of `radius_mm` at spacing `delta_mm`.
+    pub fn new(radius_mm: f64, delta_mm: f64) -> SearchSettings {
+        SearchSettings {
+            radius_mm,
+            delta_mm,
+            iterations: 5,
+            nearest: 8,
+            max_window_share: 0.5,
+            min_window_share: 0.08,
+            seed: 1,
+        }
+    }
+}
+
+/// The nearest-neighbour field: for each output sample, its input sample
+/// and the cost of their neighbourhoods' match.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct NearestField {
+    /// The input sample of each output sample.
+    pub input_of: Vec<u32>,
+    /// The neighbourhood distance of each pair.
+    pub cost: Vec<f64>,
+}
+
+/// SplitMix64 steps: reproducible choices without a dependency.
+struct Stream(u64);
+
+impl Stream {
+    fn next(&mut self) -> u64 {
+        self.0 = self.0.wrapping_add(0x9e37_79b9_7f4a_7c15);
+        let mut z = self.0;
+        z = (z ^ (z >> 30)).wrapping_mul(0xbf58_476d_1ce4_e5b9);
+        z = (z ^ (z >> 27)).wrapping_mul(0x94d0_49bb_1331_11eb);
+        z ^ (z >> 31)
+    }
+
+    /// Uniform in `-1..1`.
+    fn signed(&mut self) -> f64 {
+        (self.next() >> 11) as f64 / (1u64 << 52) as f64 - 1.0
+    }
+}
+
+/// Everything the search compares against: the input and its grid.
+struct Input<'a> {
+    graph: &'a SampleGraph,
+    grid: SampleGrid,
+    /// Each input sample's neighbourhood, found once.
+    members: Vec<Vec<u32>>,
+    size_mm: f64,
+}
+
+impl Input<'_> {
+    /// The input sample nearest `p`, if any lies within reach.
+    fn nearest(&self, p: DVec2, reach_mm: f64) -> Option<u32> {
+        self.grid.within(self.graph, p, reach_mm).first().copied()
+    }
+}
+
+/// PatchMatch: starting from `start` (the previous step's field) or at
+/// random, each pass visits the output samples breadth first over their
+/// nearest-sample graph (forward, then backward), and tries for each the
+/// input sample its neighbours' matches suggest (propagation) and ones
+/// near its own match in shrinking windows (random search), keeping the
+/// cheapest by [`neighbourhood_distance`].
+pub fn search(
+    output: &SampleGraph,
+    input: &SampleGraph,
+    start: Option<&NearestField>,
+    settings: &SearchSettings,
+) -> NearestField {
+    let n_out = output.samples.len();
+    if n_out == 0 || input.samples.is_empty() {
+        return NearestField::default();
+    }
+    let similarity = Similarity::new(settings.delta_mm);
+    let grid = SampleGrid::new(input, settings.radius_mm);
+    let members = (0..input.samples.len())
+        .map(|s| grid.within(input, input.samples[s].position_mm, settings.radius_mm))
+        .collect();
+    let (low, high) = input
+        .samples
+        .iter()
+        .fold((DVec2::MAX, DVec2::MIN), |(lo, hi), s| (lo.min(s.position_mm), hi.max(s.position_mm)));
+    let input = Input { graph: input, grid, members, size_mm: (high - low).max_element().max(settings.delta_mm) };
+    let out_grid = SampleGrid::new(output, settings.radius_mm);
+    let out_members: Vec<Vec<u32>> =
+        (0..n_out).map(|s| out_grid.within(output, output.samples[s].position_mm, settings.radius_mm)).collect();
+    let nearest: Vec<Vec<u32>> = (0..n_out)
+        .map(|s| {
+            let reach = 2.0 * settings.radius_mm;
+            let found = out_grid.within(output, output.samples[s].position_mm, reach);
+            found.into_iter().filter(|&n| n as usize != s).take(settings.nearest).collect()
+        })
+        .collect();
+    let order = breadth_first(&nearest);
+    let mut stream = Stream(settings.seed);
+    let cost_of = |o: usize, i: u32| {
+        let i = i as usize;
+        neighbourhood_distance(output, o, &out_members[o], input.graph, i, &input.members[i], &similarity).cost
+    };
+    let mut field = match start {
+        Some(f) if f.input_of.len() == n_out => f.clone(),
+        _ => {
+            let input_of: Vec<u32> =
+                (0..n_out).map(|_| (stream.next() % input.graph.samples.len() as u64) as u32).collect();
+            let cost = input_of.iter().enumerate().map(|(o, &i)| cost_of(o, i)).collect();
+            NearestField { input_of, cost }
+        }
+    };
+    for pass in 0..settings.iterations {
+        let visit: Box<dyn Iterator<Item = &u32>> =
+            if pass % 2 == 0 { Box::new(order.iter()) } else { Box::new(order.iter().rev()) };
+        for &o in visit {
+            let o = o as usize;
+            let here = output.samples[o].position_mm;
+            let try_candidate = |field: &mut NearestField, i: u32| {
+                if i == field.input_of[o] {
+                    return;
+                }
+                let c = cost_of(o, i);
+                if c < field.cost[o] {
+                    field.input_of[o] = i;
+                    field.cost[o] = c;
+                }
+            };
+            // Propagation: where a neighbour's match says this sample's should be.
+            for &n in &nearest[o] {
+                let matched = input.graph.samples[field.input_of[n as usize] as usize].position_mm;
+                let guess = matched + (here - output.samples[n as usize].position_mm);
+                if let Some(i) = input.nearest(guess, settings.delta_mm) {
+                    try_candidate(&mut field, i);
+                }
+            }
+            // Random search round the current match, in shrinking windows.
+            let mut window = settings.max_window_share * input.size_mm;
+            while window >= settings.min_window_share * input.size_mm {
+                let around = input.graph.samples[field.input_of[o] as usize].position_mm;
+                let guess = around + DVec2::new(stream.signed(), stream.signed()) * window;
+                if let Some(i) = input.nearest(guess, window) {
+                    try_candidate(&mut field, i);
+                }
+                window *= 0.5;
+            }
+        }
+    }
+    field
+}
+
+/// Every sample once, breadth first over `nearest` from the first sample
+/// of each connected part.
+fn breadth_first(nearest: &[Vec<u32>]) -> Vec<u32> {
+    let mut seen = vec![false; nearest.len()];
+    let mut order = Vec::with_capacity(nearest.len());
+    for start in 0..nearest.len() {
+        if seen[start] {
+            continue;
+        }
+        seen[start] = true;
+        let mut queue = std::collections::VecDeque::from([start as u32]);
+        while let Some(s) = queue.pop_front() {
+            order.push(s);
+            for &n in &nearest[s as usize] {
+                if !seen[n as usize] {
+                    seen[n as usize] = true;
+                    queue.push_back(n);
+                }
+            }
+        }
+    }
+    order
+}
