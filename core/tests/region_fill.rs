@@ -252,3 +252,32 @@ fn patch_match_finds_each_sample_of_a_moved_copy() {
         assert!(mean < 0.1 * delta_mm, "{name}: mean neighbourhood distance {mean}");
     }
 }
+
+/// Shares of ends and junctions among the samples of `paths` sampled at `delta_mm`.
+fn degree_shares(paths: &[CurvePath], delta_mm: f64) -> (f64, f64) {
+    let graph = SampleGraph::new(paths, delta_mm).unwrap();
+    let n = graph.samples.len() as f64;
+    let count = |kind| (0..graph.samples.len()).filter(|&s| graph.kind(s) == kind).count() as f64 / n;
+    (count(SampleKind::End), count(SampleKind::Junction))
+}
+
+#[test]
+fn a_crackle_fill_stays_in_its_rectangle_and_keeps_the_exemplars_junctions() {
+    use tracery_core::region_fill::{FillSettings, fill_rectangle};
+    let exemplar = builtin_curves("crackle").unwrap();
+    let settings = FillSettings::default();
+    let (width, height) = (36.0, 24.0);
+    let paths = fill_rectangle(&exemplar, width, height, &settings).unwrap();
+    let all: Vec<DVec2> = paths.iter().flat_map(|p| p.points_mm.iter().copied()).collect();
+    assert!(all.len() > 100, "{} points", all.len());
+    assert!(all.iter().all(|p| p.x >= -1e-9 && p.y >= -1e-9 && p.x <= width + 1e-9 && p.y <= height + 1e-9));
+    // Counted on the output's own paths, sampled again: junctions are as
+    // common as in the exemplar, within a factor of two.
+    let (_, exemplar_junctions) = degree_shares(&exemplar, settings.delta_mm);
+    let (_, fill_junctions) = degree_shares(&paths, settings.delta_mm);
+    eprintln!("junctions: exemplar {exemplar_junctions:.3}, fill {fill_junctions:.3}");
+    assert!(
+        fill_junctions > 0.5 * exemplar_junctions && fill_junctions < 2.0 * exemplar_junctions,
+        "junctions: exemplar {exemplar_junctions:.3}, fill {fill_junctions:.3}"
+    );
+}

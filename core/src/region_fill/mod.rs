@@ -6,19 +6,23 @@
 //! ([`SampleGrid`], [`neighbourhood_distance`]) by robust matching
 //! ([`robust_match`]), and the PatchMatch search step ([`search`]).
 
+mod assignment;
 mod builtin;
 mod curve_path;
 mod matching;
 mod neighbourhood;
 mod sample_graph;
 mod search;
+mod synthesis;
 
+pub use assignment::{MatchedPair, assign_edges, assign_positions, existence_votes};
 pub use builtin::{BUILTIN_CURVES, builtin_curves};
 pub use curve_path::CurvePath;
 pub use matching::{Matching, robust_match};
 pub use neighbourhood::{EDGE_WEIGHT, SampleGrid, Similarity, edge_difference, neighbourhood_distance, unmatched_cost};
 pub use sample_graph::{JOIN_TOLERANCE_MM, MAX_SEGMENTS, Sample, SampleError, SampleGraph, SampleKind};
 pub use search::{NearestField, SearchSettings, search};
+pub use synthesis::{FillSettings, fill_rectangle};
 
 /// Levels of the sample hierarchy, coarse to fine.
 pub const LEVELS: usize = 3;

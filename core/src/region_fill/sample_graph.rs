@@ -130,14 +130,73 @@ impl SampleGraph {
         out
     }
 
-    fn add_sample(&mut self, position_mm: DVec2) -> u32 {
+    /// The graph as paths: a path from each end or junction along plain
+    /// samples (two edges) to the next end or junction, and a closed path
+    /// for each loop of plain samples. Every edge is in exactly one path.
+    ///
+    /// ```
+    /// use tracery_core::DVec2;
+    /// use tracery_core::region_fill::{CurvePath, SampleGraph};
+    /// let line = |a: DVec2, b: DVec2| CurvePath { points_mm: vec![a, b], closed: false };
+    /// let plus = SampleGraph::new(&[line(DVec2::new(-5.0, 0.0), DVec2::new(5.0, 0.0)), line(DVec2::new(0.0, -5.0), DVec2::new(0.0, 5.0))], 1.0).unwrap();
+    /// assert_eq!(plus.to_paths().len(), 4);
+    /// ```
+    pub fn to_paths(&self) -> Vec<CurvePath> {
+        let mut used: rustc_hash::FxHashSet<(u32, u32)> = Default::default();
+        let key = |a: u32, b: u32| (a.min(b), a.max(b));
+        let mut paths = Vec::new();
+        let plain = |s: u32| self.neighbours[s as usize].len() == 2;
+        let walk = |start: u32, first: u32, used: &mut rustc_hash::FxHashSet<(u32, u32)>| {
+            let mut points = vec![self.samples[start as usize].position_mm];
+            let (mut previous, mut current) = (start, first);
+            used.insert(key(previous, current));
+            loop {
+                points.push(self.samples[current as usize].position_mm);
+                if !plain(current) || current == start {
+                    break;
+                }
+                let Some(&next) = self.neighbours[current as usize].iter().find(|&&n| !used.contains(&key(current, n)))
+                else {
+                    break;
+                };
+                used.insert(key(current, next));
+                previous = current;
+                current = next;
+            }
+            let _ = previous;
+            let closed = current == start && points.len() > 3;
+            if closed {
+                points.pop();
+            }
+            CurvePath { points_mm: points, closed }
+        };
+        for s in 0..self.samples.len() as u32 {
+            if plain(s) {
+                continue;
+            }
+            for &t in &self.neighbours[s as usize].clone() {
+                if !used.contains(&key(s, t)) {
+                    paths.push(walk(s, t, &mut used));
+                }
+            }
+        }
+        for s in 0..self.samples.len() as u32 {
+            if let Some(&t) = self.neighbours[s as usize].iter().find(|&&t| !used.contains(&key(s, t))) {
+                paths.push(walk(s, t, &mut used));
+            }
+        }
+        paths
+    }
+
+    /// Adds a sample at `position_mm` with no edges; returns its index.
+    pub fn add_sample(&mut self, position_mm: DVec2) -> u32 {
         self.samples.push(Sample { position_mm, orientations: SmallVec::new(), existence: 1.0 });
         self.neighbours.push(SmallVec::new());
         (self.samples.len() - 1) as u32
     }
 
     /// Joins `a` and `b`, recording at each the direction toward the other.
-    fn join(&mut self, a: u32, b: u32) {
+    pub fn connect(&mut self, a: u32, b: u32) {
         if a == b || self.neighbours[a as usize].contains(&b) {
             return;
         }
@@ -147,6 +206,34 @@ impl SampleGraph {
         self.samples[b as usize].orientations.push(angle(-d));
         self.neighbours[a as usize].push(b);
         self.neighbours[b as usize].push(a);
+    }
+
+    /// Keeps the samples `keep` says, with the edges between them.
+    pub fn retain(&mut self, keep: &[bool]) {
+        let mut new_index = vec![u32::MAX; self.samples.len()];
+        let mut next = 0;
+        for (s, &k) in keep.iter().enumerate() {
+            if k {
+                new_index[s] = next;
+                next += 1;
+            }
+        }
+        let old_neighbours = std::mem::take(&mut self.neighbours);
+        let old_samples = std::mem::take(&mut self.samples);
+        for (s, sample) in old_samples.into_iter().enumerate() {
+            if keep[s] {
+                self.samples.push(Sample { orientations: SmallVec::new(), ..sample });
+                self.neighbours.push(SmallVec::new());
+            }
+        }
+        for (s, around) in old_neighbours.iter().enumerate() {
+            for &n in around {
+                let (a, b) = (new_index[s], new_index[n as usize]);
+                if a != u32::MAX && b != u32::MAX && a < b {
+                    self.connect(a, b);
+                }
+            }
+        }
     }
 
     /// The sample of junction point `point`, made on first use.
@@ -206,10 +293,10 @@ impl SampleGraph {
         for k in 1..intervals {
             let s = from + (to - from) * k as f64 / intervals as f64;
             let next = self.add_sample(path.point_at(s));
-            self.join(previous, next);
+            self.connect(previous, next);
             previous = next;
         }
-        self.join(previous, b);
+        self.connect(previous, b);
     }
 }
 

@@ -1,0 +1,160 @@
+//! The assignment step (section 4.3.4 of the curve-texture paper): every
+//! matched pair of neighbourhoods votes on where output samples lie, which
+//! exist, and which are joined; the votes are then settled.
+
+use glam::DVec2;
+use rustc_hash::FxHashMap;
+use smallvec::SmallVec;
+
+use super::{Matching, SampleGraph};
+
+/// One matched pair of neighbourhoods: output sample `centre_o`'s members,
+/// input sample `centre_i`'s members, and how they matched.
+#[derive(Clone, Debug)]
+pub struct MatchedPair {
+    /// The output centre.
+    pub centre_o: u32,
+    /// The output neighbourhood's samples.
+    pub members_o: Vec<u32>,
+    /// The input centre.
+    pub centre_i: u32,
+    /// The input neighbourhood's samples.
+    pub members_i: Vec<u32>,
+    /// Which input member each output member matched.
+    pub matching: Matching,
+}
+
+/// Sweeps of the position solve: each moves every sample to the mean of
+/// where its votes put it.
+const POSITION_SWEEPS: usize = 20;
+
+/// Positions (equation 14): each matched pair says that output members
+/// should lie from their centre as the matched input members lie from
+/// theirs. Solved in the least-squares sense by Jacobi sweeps from the
+/// current positions; a sample outside `inside` is pulled back to its
+/// nearest point of the domain by `project`.
+pub fn assign_positions(
+    output: &mut SampleGraph,
+    input: &SampleGraph,
+    pairs: &[MatchedPair],
+    project: &dyn Fn(DVec2) -> DVec2,
+) {
+    // Each vote: (a, b, d) says p(b) - p(a) should be d.
+    let mut votes: Vec<(u32, u32, DVec2)> = Vec::new();
+    for pair in pairs {
+        let centre_i = input.samples[pair.centre_i as usize].position_mm;
+        for (k, matched) in pair.matching.input_of.iter().enumerate() {
+            let (Some(i), member) = (matched, pair.members_o[k]) else { continue };
+            if member == pair.centre_o {
+                continue;
+            }
+            let d = input.samples[pair.members_i[*i] as usize].position_mm - centre_i;
+            votes.push((pair.centre_o, member, d));
+        }
+    }
+    let n = output.samples.len();
+    for _ in 0..POSITION_SWEEPS {
+        let mut sum = vec![DVec2::ZERO; n];
+        let mut count = vec![0.0; n];
+        for &(a, b, d) in &votes {
+            let (pa, pb) = (output.samples[a as usize].position_mm, output.samples[b as usize].position_mm);
+            sum[b as usize] += pa + d;
+            count[b as usize] += 1.0;
+            sum[a as usize] += pb - d;
+            count[a as usize] += 1.0;
+        }
+        for s in 0..n {
+            if count[s] > 0.0 {
+                // Half toward the votes' mean: Jacobi sweeps with damping converge on such graphs.
+                let target = sum[s] / count[s];
+                let p = &mut output.samples[s].position_mm;
+                *p = project(0.5 * (*p + target));
+            }
+        }
+    }
+}
+
+/// Existence (equation 15): the share of the neighbourhoods holding a
+/// sample in which it was matched. Samples below one half are removed by
+/// [`SampleGraph::retain`].
+pub fn existence_votes(samples: usize, pairs: &[MatchedPair]) -> Vec<f64> {
+    let (mut held, mut matched) = (vec![0.0; samples], vec![0.0; samples]);
+    for pair in pairs {
+        for (k, &member) in pair.members_o.iter().enumerate() {
+            held[member as usize] += 1.0;
+            if pair.matching.input_of[k].is_some() {
+                matched[member as usize] += 1.0;
+            }
+        }
+    }
+    (0..samples).map(|s| if held[s] > 0.0 { matched[s] / held[s] } else { 1.0 }).collect()
+}
+
+/// Edges (equations 16 to 21): each pair votes for an output edge where
+/// two members matched two input samples that are joined; an edge's
+/// expected confidence is its votes over the pairs holding both ends, and
+/// a sample's expected edge count the mean of its matches'. Edges are then
+/// taken greedily, most confident first, when taking one brings the
+/// confidences and the counts closer (equation 21).
+pub fn assign_edges(output: &mut SampleGraph, input: &SampleGraph, pairs: &[MatchedPair]) {
+    let n = output.samples.len();
+    let mut votes: FxHashMap<(u32, u32), f64> = FxHashMap::default();
+    let (mut degree_sum, mut degree_count) = (vec![0.0; n], vec![0.0; n]);
+    for pair in pairs {
+        let mut output_of_input: FxHashMap<u32, u32> = FxHashMap::default();
+        for (k, matched) in pair.matching.input_of.iter().enumerate() {
+            if let Some(i) = matched {
+                let (so, si) = (pair.members_o[k], pair.members_i[*i]);
+                output_of_input.insert(si, so);
+                degree_sum[so as usize] += input.neighbours[si as usize].len() as f64;
+                degree_count[so as usize] += 1.0;
+            }
+        }
+        for (&si, &so) in &output_of_input {
+            for &sj in &input.neighbours[si as usize] {
+                if let Some(&to) = output_of_input.get(&sj)
+                    && so < to
+                {
+                    *votes.entry((so, to)).or_default() += 1.0;
+                }
+            }
+        }
+    }
+    // How many pairs hold both ends of each voted edge.
+    let mut both_held: FxHashMap<(u32, u32), f64> = FxHashMap::default();
+    for pair in pairs {
+        for (a, &x) in pair.members_o.iter().enumerate() {
+            for &y in &pair.members_o[a + 1..] {
+                let key = if x < y { (x, y) } else { (y, x) };
+                if votes.contains_key(&key) {
+                    *both_held.entry(key).or_default() += 1.0;
+                }
+            }
+        }
+    }
+    let expected_degree: Vec<f64> =
+        (0..n).map(|s| if degree_count[s] > 0.0 { degree_sum[s] / degree_count[s] } else { 0.0 }).collect();
+    let mut candidates: Vec<((u32, u32), f64)> =
+        votes.iter().map(|(&key, &v)| (key, v / both_held.get(&key).copied().unwrap_or(v).max(v))).collect();
+    candidates.sort_by(|a, b| b.1.total_cmp(&a.1).then(a.0.cmp(&b.0)));
+    let mut degree = vec![0usize; n];
+    let mut chosen = Vec::new();
+    for ((a, b), confidence) in candidates {
+        let (da, db) = (degree[a as usize] as f64, degree[b as usize] as f64);
+        let (ea, eb) = (expected_degree[a as usize], expected_degree[b as usize]);
+        let without = confidence + (da - ea).abs() + (db - eb).abs();
+        let with = (1.0 - confidence) + (da + 1.0 - ea).abs() + (db + 1.0 - eb).abs();
+        if with < without {
+            degree[a as usize] += 1;
+            degree[b as usize] += 1;
+            chosen.push((a, b));
+        }
+    }
+    output.neighbours = vec![SmallVec::new(); n];
+    for sample in &mut output.samples {
+        sample.orientations.clear();
+    }
+    for (a, b) in chosen {
+        output.connect(a, b);
+    }
+}

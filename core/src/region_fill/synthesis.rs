@@ -1,0 +1,160 @@
+//! Synthesis of a curve texture in a rectangle (sections 4.3.2 to 4.3.5 of
+//! the curve-texture paper): patches of the exemplar's samples copied in,
+//! then search and assignment steps at each level, coarse to fine, the
+//! graph made into paths and sampled again between levels.
+
+use glam::DVec2;
+
+use super::assignment::{MatchedPair, assign_edges, assign_positions, existence_votes};
+use super::{
+    CurvePath, LEVELS, NearestField, SampleError, SampleGraph, SampleGrid, SearchSettings, Similarity,
+    neighbourhood_distance, search,
+};
+
+/// How a fill is synthesized.
+#[derive(Clone, Copy, Debug, PartialEq)]
+#[non_exhaustive]
+pub struct FillSettings {
+    /// Sample spacing at the finest level, mm; coarser levels double it.
+    pub delta_mm: f64,
+    /// Neighbourhood radius in spacings (not a whole number: see `docs/region-fill.md`).
+    pub radius_spacings: f64,
+    /// Search and assignment steps at each level.
+    pub iterations: usize,
+    /// Seed of the random choices.
+    pub seed: u64,
+}
+
+impl Default for FillSettings {
+    fn default() -> Self {
+        FillSettings { delta_mm: 1.5, radius_spacings: 3.1, iterations: 7, seed: 1 }
+    }
+}
+
+/// SplitMix64, for the patches' placement.
+fn random(state: &mut u64) -> f64 {
+    *state = state.wrapping_add(0x9e37_79b9_7f4a_7c15);
+    let mut z = *state;
+    z = (z ^ (z >> 30)).wrapping_mul(0xbf58_476d_1ce4_e5b9);
+    z = (z ^ (z >> 27)).wrapping_mul(0x94d0_49bb_1331_11eb);
+    ((z ^ (z >> 31)) >> 11) as f64 / (1u64 << 53) as f64
+}
+
+/// Patches (section 4.3.2): the rectangle `size_mm` is tiled with squares
+/// `patch_mm` wide, each filled with the samples (not the edges) of a
+/// random square of the input, leaving out samples within half a spacing
+/// of ones already placed.
+fn initialize(input: &SampleGraph, size_mm: DVec2, patch_mm: f64, delta_mm: f64, seed: &mut u64) -> SampleGraph {
+    let (low, high) = bounds(input);
+    let mut output = SampleGraph::default();
+    let grid_of = |g: &SampleGraph| SampleGrid::new(g, delta_mm);
+    let (nx, ny) = ((size_mm.x / patch_mm).ceil() as usize, (size_mm.y / patch_mm).ceil() as usize);
+    for j in 0..ny {
+        for i in 0..nx {
+            let target = DVec2::new(i as f64, j as f64) * patch_mm;
+            let room = (high - low - DVec2::splat(patch_mm)).max(DVec2::ZERO);
+            let source = low + DVec2::new(random(seed), random(seed)) * room;
+            let placed = grid_of(&output);
+            for sample in &input.samples {
+                let local = sample.position_mm - source;
+                if local.x < 0.0 || local.y < 0.0 || local.x >= patch_mm || local.y >= patch_mm {
+                    continue;
+                }
+                let at = target + local;
+                if at.x > size_mm.x || at.y > size_mm.y || !placed.within(&output, at, 0.5 * delta_mm).is_empty() {
+                    continue;
+                }
+                output.add_sample(at);
+            }
+        }
+    }
+    output
+}
+
+fn bounds(graph: &SampleGraph) -> (DVec2, DVec2) {
+    graph.samples.iter().fold((DVec2::MAX, DVec2::MIN), |(lo, hi), s| (lo.min(s.position_mm), hi.max(s.position_mm)))
+}
+
+/// Fills a rectangle `width_mm × height_mm` (from the origin) with a curve
+/// texture like `exemplar`; returns the paths.
+///
+/// ```no_run
+/// use tracery_core::region_fill::{FillSettings, builtin_curves, fill_rectangle};
+/// let paths = fill_rectangle(&builtin_curves("crackle").unwrap(), 60.0, 40.0, &FillSettings::default()).unwrap();
+/// assert!(!paths.is_empty());
+/// ```
+pub fn fill_rectangle(
+    exemplar: &[CurvePath],
+    width_mm: f64,
+    height_mm: f64,
+    settings: &FillSettings,
+) -> Result<Vec<CurvePath>, SampleError> {
+    let size = DVec2::new(width_mm, height_mm);
+    let mut seed = settings.seed;
+    let mut paths: Option<Vec<CurvePath>> = None;
+    for level in 0..LEVELS {
+        let delta = settings.delta_mm * 2f64.powi((LEVELS - 1 - level) as i32);
+        let radius = settings.radius_spacings * delta;
+        let input = SampleGraph::new(exemplar, delta)?;
+        let output = match &paths {
+            None => initialize(&input, size, 2.0 * radius, delta, &mut seed),
+            Some(p) => SampleGraph::new(p, delta)?,
+        };
+        let output = synthesize_level(&input, output, size, delta, radius, settings.iterations, &mut seed);
+        paths = Some(output.to_paths());
+    }
+    Ok(paths.unwrap_or_default())
+}
+
+/// Search and assignment steps at one level.
+fn synthesize_level(
+    input: &SampleGraph,
+    mut output: SampleGraph,
+    size_mm: DVec2,
+    delta_mm: f64,
+    radius_mm: f64,
+    iterations: usize,
+    seed: &mut u64,
+) -> SampleGraph {
+    let similarity = Similarity::new(delta_mm);
+    let project = |p: DVec2| p.clamp(DVec2::ZERO, size_mm);
+    let input_grid = SampleGrid::new(input, radius_mm);
+    let mut field: Option<NearestField> = None;
+    for step in 0..iterations {
+        let mut search_settings = SearchSettings::new(radius_mm, delta_mm);
+        search_settings.iterations = if step == 0 { 5 } else { 2 };
+        search_settings.seed = *seed ^ step as u64;
+        let found = search(&output, input, field.as_ref(), &search_settings);
+        let grid = SampleGrid::new(&output, radius_mm);
+        let pairs: Vec<MatchedPair> = (0..output.samples.len())
+            .map(|o| {
+                let members_o = grid.within(&output, output.samples[o].position_mm, radius_mm);
+                let centre_i = found.input_of[o];
+                let members_i = input_grid.within(input, input.samples[centre_i as usize].position_mm, radius_mm);
+                let matching =
+                    neighbourhood_distance(&output, o, &members_o, input, centre_i as usize, &members_i, &similarity);
+                MatchedPair { centre_o: o as u32, members_o, centre_i, members_i, matching }
+            })
+            .collect();
+        assign_positions(&mut output, input, &pairs, &project);
+        assign_edges(&mut output, input, &pairs);
+        // Existence: samples matched in fewer than half the neighbourhoods
+        // holding them go, with their place in the field.
+        let keep: Vec<bool> = existence_votes(output.samples.len(), &pairs).iter().map(|&i| i >= 0.5).collect();
+        let mut kept = found;
+        let mut k = 0;
+        kept.input_of.retain(|_| {
+            k += 1;
+            keep[k - 1]
+        });
+        let mut k = 0;
+        kept.cost.retain(|_| {
+            k += 1;
+            keep[k - 1]
+        });
+        output.retain(&keep);
+        let _ = random(seed);
+        field = Some(kept);
+    }
+    output
+}
