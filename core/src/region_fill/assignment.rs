@@ -158,3 +158,73 @@ pub fn assign_edges(output: &mut SampleGraph, input: &SampleGraph, pairs: &[Matc
         output.connect(a, b);
     }
 }
+
+/// Where samples are missing (the paper's Algorithm 1): in each pair, an
+/// input member that no output member matched says the output lacks a
+/// sample at the same place from its centre. Such candidates are gathered
+/// into clusters half a spacing wide; a cluster becomes a sample where it
+/// was proposed by more than half of the output neighbourhoods that would
+/// hold it, `inside` the domain and not on top of a sample already there.
+pub fn missing_samples(
+    output: &SampleGraph,
+    input: &SampleGraph,
+    pairs: &[MatchedPair],
+    delta_mm: f64,
+    radius_mm: f64,
+    inside: &dyn Fn(DVec2) -> bool,
+) -> Vec<DVec2> {
+    let mut candidates: Vec<DVec2> = Vec::new();
+    for pair in pairs {
+        let mut used = vec![false; pair.members_i.len()];
+        for i in pair.matching.input_of.iter().flatten() {
+            used[*i] = true;
+        }
+        let centre_i = input.samples[pair.centre_i as usize].position_mm;
+        let centre_o = output.samples[pair.centre_o as usize].position_mm;
+        for (k, &member) in pair.members_i.iter().enumerate() {
+            if !used[k] {
+                candidates.push(input.samples[member as usize].position_mm - centre_i + centre_o);
+            }
+        }
+    }
+    // Greedy clustering: each candidate joins the nearest cluster whose
+    // centre is within half a spacing, or starts one.
+    let mut clusters: Vec<(DVec2, f64)> = Vec::new();
+    let cell = 0.5 * delta_mm;
+    let key = |p: DVec2| ((p.x / cell).floor() as i64, (p.y / cell).floor() as i64);
+    let mut grid: FxHashMap<(i64, i64), Vec<usize>> = FxHashMap::default();
+    for c in candidates {
+        let (cx, cy) = key(c);
+        let mut best: Option<(usize, f64)> = None;
+        for dx in -1..=1 {
+            for dy in -1..=1 {
+                for &k in grid.get(&(cx + dx, cy + dy)).map_or(&[][..], |v| &v[..]) {
+                    let d = (clusters[k].0 / clusters[k].1).distance(c);
+                    if d < cell && best.is_none_or(|(_, bd)| d < bd) {
+                        best = Some((k, d));
+                    }
+                }
+            }
+        }
+        match best {
+            Some((k, _)) => {
+                clusters[k].0 += c;
+                clusters[k].1 += 1.0;
+            }
+            None => {
+                grid.entry((cx, cy)).or_default().push(clusters.len());
+                clusters.push((c, 1.0));
+            }
+        }
+    }
+    let existing = super::SampleGrid::new(output, radius_mm);
+    clusters
+        .into_iter()
+        .filter_map(|(sum, count)| {
+            let at = sum / count;
+            let holding = existing.within(output, at, radius_mm).len() as f64;
+            let crowded = !existing.within(output, at, 0.5 * delta_mm).is_empty();
+            (inside(at) && !crowded && holding > 0.0 && count / holding > 0.5).then_some(at)
+        })
+        .collect()
+}

@@ -130,7 +130,11 @@ pub fn search(
         neighbourhood_distance(output, o, &out_members[o], input.graph, i, &input.members[i], &similarity).cost
     };
     let mut field = match start {
-        Some(f) if f.input_of.len() == n_out => f.clone(),
+        // The previous step's matches, scored again: the samples have moved since.
+        Some(f) if f.input_of.len() == n_out => {
+            let cost = f.input_of.iter().enumerate().map(|(o, &i)| cost_of(o, i)).collect();
+            NearestField { input_of: f.input_of.clone(), cost }
+        }
         _ => {
             let input_of: Vec<u32> =
                 (0..n_out).map(|_| (stream.next() % input.graph.samples.len() as u64) as u32).collect();

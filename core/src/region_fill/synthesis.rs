@@ -5,7 +5,7 @@
 
 use glam::DVec2;
 
-use super::assignment::{MatchedPair, assign_edges, assign_positions, existence_votes};
+use super::assignment::{MatchedPair, assign_edges, assign_positions, existence_votes, missing_samples};
 use super::{
     CurvePath, LEVELS, NearestField, SampleError, SampleGraph, SampleGrid, SearchSettings, Similarity,
     neighbourhood_distance, search,
@@ -137,6 +137,8 @@ fn synthesize_level(
             })
             .collect();
         assign_positions(&mut output, input, &pairs, &project);
+        let inside = |p: DVec2| p.cmpge(DVec2::ZERO).all() && p.cmple(size_mm).all();
+        let added = missing_samples(&output, input, &pairs, delta_mm, radius_mm, &inside);
         assign_edges(&mut output, input, &pairs);
         // Existence: samples matched in fewer than half the neighbourhoods
         // holding them go, with their place in the field.
@@ -153,7 +155,12 @@ fn synthesize_level(
             keep[k - 1]
         });
         output.retain(&keep);
-        let _ = random(seed);
+        // New samples join the field at random; the next search places them.
+        for p in added {
+            output.add_sample(p);
+            kept.input_of.push((random(seed) * input.samples.len() as f64) as u32 % input.samples.len() as u32);
+            kept.cost.push(f64::MAX);
+        }
         field = Some(kept);
     }
     output
