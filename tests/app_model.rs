@@ -156,16 +156,48 @@ fn a_model_that_is_not_a_surface_is_refused_and_its_name_stays_free() {
     let _ = std::fs::remove_file(&path);
 }
 
-#[test]
-fn two_embossed_curves_export_as_one_object_holding_the_vase_once() {
-    let dir = std::env::temp_dir().join(format!("tracery-object-{}", std::process::id()));
+/// A folder for an export test's files, and the app answering its STL and
+/// 3MF dialogs with files there, showing the model workspace.
+fn model_export(
+    name: &str,
+) -> (std::path::PathBuf, std::path::PathBuf, std::path::PathBuf, Harness<'static, TraceryApp>) {
+    let dir = std::env::temp_dir().join(format!("tracery-{name}-{}", std::process::id()));
     let _ = std::fs::remove_dir_all(&dir);
     std::fs::create_dir_all(&dir).unwrap();
-    let (stl_path, three_mf) = (dir.join("object.stl"), dir.join("object.3mf"));
+    let (stl_path, three_mf) = (dir.join(format!("{name}.stl")), dir.join(format!("{name}.3mf")));
     let mut harness = harness(vec![(FileKind::ExportStl, stl_path.clone()), (FileKind::Export3mf, three_mf.clone())]);
     harness.step();
     harness.get_by_label("3D model").click();
     harness.run_steps(2);
+    (dir, stl_path, three_mf, harness)
+}
+
+/// Exports the object as STL and as 3MF, and checks that both are one
+/// closed body (PrusaSlicer, where installed, calls it manifold); returns the STL's mesh.
+fn export_one_body(
+    harness: &mut Harness<'static, TraceryApp>,
+    stl_path: &std::path::Path,
+    three_mf: &std::path::Path,
+) -> tracery_core::mesh::Mesh {
+    click_in_side_panel(harness, "Export STL…");
+    assert!(stl_path.exists(), "no STL written: {:?}", harness.state().message);
+    let check = stl::check_stl(stl_path);
+    assert_eq!((check.open_edges, check.misoriented_edges), (0, 0), "{check:?}");
+    assert_eq!(check.shells, 1, "the object is one body: {check:?}");
+    click_in_side_panel(harness, "Export 3MF…");
+    assert!(three_mf.exists(), "no 3MF written: {:?}", harness.state().message);
+    let read = threemf::read_3mf(&std::fs::read(three_mf).unwrap());
+    assert_eq!(read.objects.len(), 1, "the 3MF holds one object");
+    assert!(threemf::is_closed(&read.objects[0].2), "the 3MF's object is closed");
+    if let Some((manifold, objects)) = threemf::prusa_info(three_mf) {
+        assert!(manifold && objects == 1, "PrusaSlicer: manifold {manifold}, {objects} object(s)");
+    }
+    tracery_core::mesh::read_stl(&std::fs::read(stl_path).unwrap(), "test").unwrap()
+}
+
+#[test]
+fn two_embossed_curves_export_as_one_object_holding_the_vase_once() {
+    let (dir, stl_path, three_mf, mut harness) = model_export("object");
     let ring = |z: f64| vec![[30.0, 0.0, z], [0.0, 30.0, z], [-30.0, 0.0, z], [0.0, -30.0, z]];
     let app = harness.state_mut();
     let template = tracery::document::SurfaceCurveItem::default();
@@ -178,38 +210,18 @@ fn two_embossed_curves_export_as_one_object_holding_the_vase_once() {
         item.settings.band_mm = 7.0;
     }
     settle_model(&mut harness);
-    click_in_side_panel(&mut harness, "Export STL…");
-    assert!(stl_path.exists(), "no STL written: {:?}", harness.state().message);
-    let check = stl::check_stl(&stl_path);
-    assert_eq!((check.open_edges, check.misoriented_edges), (0, 0), "{check:?}");
-    assert_eq!(check.shells, 1, "both rings and the vase are one body: {check:?}");
+    let object = export_one_body(&mut harness, &stl_path, &three_mf);
     // The vase is in it once: the object's volume is the vase's and the two
     // reliefs', far from two vases.
-    let read = |p: &std::path::Path| tracery_core::mesh::read_stl(&std::fs::read(p).unwrap(), "test").unwrap();
     let vase = SurfaceMesh::new(builtin_base("vase").unwrap()).unwrap().mesh().signed_volume();
-    let relief = read(&stl_path).signed_volume() - vase;
+    let relief = object.signed_volume() - vase;
     assert!(relief > 200.0 && relief < 0.2 * vase, "{relief:.0} mm³ beyond the vase's {vase:.0}");
-    click_in_side_panel(&mut harness, "Export 3MF…");
-    assert!(three_mf.exists(), "no 3MF written: {:?}", harness.state().message);
-    let read = threemf::read_3mf(&std::fs::read(&three_mf).unwrap());
-    assert_eq!(read.objects.len(), 1, "the 3MF holds one object");
-    assert!(threemf::is_closed(&read.objects[0].2), "the 3MF's object is closed");
-    if let Some((manifold, objects)) = threemf::prusa_info(&three_mf) {
-        assert!(manifold && objects == 1, "PrusaSlicer: manifold {manifold}, {objects} object(s)");
-    }
     let _ = std::fs::remove_dir_all(&dir);
 }
 
 #[test]
 fn a_shade_added_on_the_cone_makes_a_lamp_in_one_body() {
-    let dir = std::env::temp_dir().join(format!("tracery-lamp-{}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&dir);
-    std::fs::create_dir_all(&dir).unwrap();
-    let (stl_path, three_mf) = (dir.join("lamp.stl"), dir.join("lamp.3mf"));
-    let mut harness = harness(vec![(FileKind::ExportStl, stl_path.clone()), (FileKind::Export3mf, three_mf.clone())]);
-    harness.step();
-    harness.get_by_label("3D model").click();
-    harness.run_steps(2);
+    let (dir, stl_path, three_mf, mut harness) = model_export("lamp");
     harness.state_mut().doc.model.base = tracery::document::BaseRef::Builtin("cone".into());
     harness.run_steps(2);
     click_in_side_panel(&mut harness, "Add shade");
@@ -217,24 +229,12 @@ fn a_shade_added_on_the_cone_makes_a_lamp_in_one_body() {
     assert_eq!(app.doc.model.shades.len(), 1, "{:?}", app.message);
     assert!(app.doc.model.with_model, "a shade on the model takes the model as its foot");
     settle_model(&mut harness);
-    click_in_side_panel(&mut harness, "Export STL…");
-    assert!(stl_path.exists(), "no STL written: {:?}", harness.state().message);
-    let check = stl::check_stl(&stl_path);
-    assert_eq!((check.open_edges, check.misoriented_edges), (0, 0), "{check:?}");
-    assert_eq!(check.shells, 1, "the shade stands on the cone as one body: {check:?}");
+    let object = export_one_body(&mut harness, &stl_path, &three_mf);
     // The cone is in it whole, and the shade rises above it.
     let cone = SurfaceMesh::new(builtin_base("cone").unwrap()).unwrap();
-    let points = stl::stl_vertices(&stl_path);
-    let top = points.iter().map(|v| v[2]).fold(f64::MIN, f64::max);
+    let top = object.vertices.iter().map(|v| v[2]).fold(f64::MIN, f64::max);
     assert!(top > 100.0, "the shade's top is at {top} mm");
-    let read = |p: &std::path::Path| tracery_core::mesh::read_stl(&std::fs::read(p).unwrap(), "test").unwrap();
-    assert!(read(&stl_path).signed_volume() > cone.mesh().signed_volume() + 1000.0);
-    click_in_side_panel(&mut harness, "Export 3MF…");
-    let read = threemf::read_3mf(&std::fs::read(&three_mf).unwrap());
-    assert_eq!(read.objects.len(), 1, "the 3MF holds one object");
-    if let Some((manifold, objects)) = threemf::prusa_info(&three_mf) {
-        assert!(manifold && objects == 1, "PrusaSlicer: manifold {manifold}, {objects} object(s)");
-    }
+    assert!(object.signed_volume() > cone.mesh().signed_volume() + 1000.0);
     // Undo takes the shade back.
     harness.key_press_modifiers(egui::Modifiers::COMMAND, egui::Key::Z);
     harness.run_steps(2);
