@@ -9,6 +9,7 @@
 //! - [`mesh`]: triangle meshes, extrusion of planar regions.
 //! - [`export`]: SVG and STL writers.
 //! - [`control`]: cancellation, progress, state caps, and [`control::Cancelled`].
+//! - [`random`]: SplitMix64, the engine's reproducible randomness.
 //! - [`report`]: typed [`report::Warning`]s and [`report::Timings`].
 //! - [`print`]: printability on the final planar geometry (thin features,
 //!   narrow gaps, weak bridges) and thickening.
@@ -40,6 +41,7 @@ pub mod mesh;
 pub mod print;
 pub mod product;
 pub mod quality;
+pub mod random;
 pub mod raster_brush;
 pub mod region_fill;
 pub mod report;

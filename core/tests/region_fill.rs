@@ -7,15 +7,6 @@ use tracery_core::region_fill::{
     BUILTIN_CURVES, CurvePath, JOIN_TOLERANCE_MM, SampleGraph, SampleKind, builtin_curves, hierarchy, robust_match,
 };
 
-/// SplitMix64, for reproducible random costs.
-fn random(seed: &mut u64) -> f64 {
-    *seed = seed.wrapping_add(0x9e37_79b9_7f4a_7c15);
-    let mut z = *seed;
-    z = (z ^ (z >> 30)).wrapping_mul(0xbf58_476d_1ce4_e5b9);
-    z = (z ^ (z >> 27)).wrapping_mul(0x94d0_49bb_1331_11eb);
-    ((z ^ (z >> 31)) >> 11) as f64 / (1u64 << 53) as f64
-}
-
 /// The cheapest cost over every way of matching each output to a distinct
 /// input or to nothing.
 fn brute_force(outputs: usize, inputs: usize, cost: &dyn Fn(usize, usize) -> f64, unmatched: &[f64]) -> f64 {
@@ -38,21 +29,21 @@ fn brute_force(outputs: usize, inputs: usize, cost: &dyn Fn(usize, usize) -> f64
 
 #[test]
 fn robust_matching_is_as_cheap_as_a_brute_force_on_tiny_neighbourhoods() {
-    let mut seed = 7;
+    let mut rng = tracery_core::random::SplitMix64::new(7);
     for case in 0..400 {
         let (outputs, inputs) = (case % 5, (case / 5) % 5);
         let costs: Vec<Vec<f64>> = (0..outputs)
             .map(|_| {
                 (0..inputs)
                     .map(|_| {
-                        let c = 3.0 * random(&mut seed);
+                        let c = 3.0 * rng.next_unit();
                         // Now and then a forbidden pair (samples of different kinds).
-                        if random(&mut seed) < 0.15 { f64::INFINITY } else { c }
+                        if rng.next_unit() < 0.15 { f64::INFINITY } else { c }
                     })
                     .collect()
             })
             .collect();
-        let unmatched: Vec<f64> = (0..outputs).map(|_| 0.5 + 2.0 * random(&mut seed)).collect();
+        let unmatched: Vec<f64> = (0..outputs).map(|_| 0.5 + 2.0 * rng.next_unit()).collect();
         let cost = |o: usize, i: usize| costs[o][i];
         let m = robust_match(outputs, inputs, &cost, &unmatched);
         let best = brute_force(outputs, inputs, &cost, &unmatched);

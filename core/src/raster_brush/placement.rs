@@ -7,6 +7,8 @@
 
 use glam::DVec2;
 
+use crate::random::{mix, steps, unit};
+
 use super::{RasterExemplar, RibbonPiece};
 
 /// A position of a piece: its top-left corner in the exemplar, pixels.
@@ -135,18 +137,10 @@ pub fn valid_positions(
 /// assert_ne!(a, variety_bias(&[(0, 0), (5, 1)], 3, 8, 100.0));
 /// ```
 pub fn variety_bias(positions: &[Position], piece: usize, seed: u64, amount: f64) -> Vec<f64> {
-    // SplitMix64: a well-mixed hash of piece, position and seed.
-    let mix = |mut z: u64| {
-        z = (z ^ (z >> 30)).wrapping_mul(0xbf58_476d_1ce4_e5b9);
-        z = (z ^ (z >> 27)).wrapping_mul(0x94d0_49bb_1331_11eb);
-        z ^ (z >> 31)
-    };
-    let base = mix(seed.wrapping_add(0x9e37_79b9_7f4a_7c15).wrapping_mul(piece as u64 + 1));
+    // A well-mixed hash of piece, position and seed.
+    let base = mix(seed.wrapping_add(steps(1)).wrapping_mul(piece as u64 + 1));
     positions
         .iter()
-        .map(|&(x, y)| {
-            let h = mix(base ^ (u64::from(x as u32) << 32 | u64::from(y as u32)));
-            amount * (h >> 11) as f64 / (1u64 << 53) as f64
-        })
+        .map(|&(x, y)| amount * unit(mix(base ^ (u64::from(x as u32) << 32 | u64::from(y as u32)))))
         .collect()
 }

@@ -121,12 +121,9 @@ fn waves() -> Vec<CurvePath> {
         .collect()
 }
 
-/// SplitMix64: a small deterministic stream for the crackle's jitter.
+/// The crackle's jitter for `seed`, in `[-0.5, 0.5)`.
 fn jitter(seed: u64) -> f64 {
-    let mut z = seed.wrapping_add(0x9e37_79b9_7f4a_7c15);
-    z = (z ^ (z >> 30)).wrapping_mul(0xbf58_476d_1ce4_e5b9);
-    z = (z ^ (z >> 27)).wrapping_mul(0x94d0_49bb_1331_11eb);
-    ((z ^ (z >> 31)) >> 11) as f64 / (1u64 << 53) as f64 - 0.5
+    crate::random::unit(crate::random::splitmix64(seed)) - 0.5
 }
 
 /// Cracks: a jittered grid of points, each joined to its right and upper

@@ -5,6 +5,7 @@
 use glam::DVec2;
 
 use super::{SampleGraph, SampleGrid, Similarity, neighbourhood_distance};
+use crate::random::SplitMix64;
 
 /// How the search runs.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -51,24 +52,6 @@ pub struct NearestField {
     pub input_of: Vec<u32>,
     /// The neighbourhood distance of each pair.
     pub cost: Vec<f64>,
-}
-
-/// SplitMix64 steps: reproducible choices without a dependency.
-struct Stream(u64);
-
-impl Stream {
-    fn next(&mut self) -> u64 {
-        self.0 = self.0.wrapping_add(0x9e37_79b9_7f4a_7c15);
-        let mut z = self.0;
-        z = (z ^ (z >> 30)).wrapping_mul(0xbf58_476d_1ce4_e5b9);
-        z = (z ^ (z >> 27)).wrapping_mul(0x94d0_49bb_1331_11eb);
-        z ^ (z >> 31)
-    }
-
-    /// Uniform in `-1..1`.
-    fn signed(&mut self) -> f64 {
-        (self.next() >> 11) as f64 / (1u64 << 52) as f64 - 1.0
-    }
 }
 
 /// Everything the search compares against: the input and its grid.
@@ -124,7 +107,7 @@ pub fn search(
         })
         .collect();
     let order = breadth_first(&nearest);
-    let mut stream = Stream(settings.seed);
+    let mut stream = SplitMix64::new(settings.seed);
     let cost_of = |o: usize, i: u32| {
         let i = i as usize;
         neighbourhood_distance(output, o, &out_members[o], input.graph, i, &input.members[i], &similarity).cost
@@ -137,7 +120,7 @@ pub fn search(
         }
         _ => {
             let input_of: Vec<u32> =
-                (0..n_out).map(|_| (stream.next() % input.graph.samples.len() as u64) as u32).collect();
+                (0..n_out).map(|_| stream.below(input.graph.samples.len() as u64) as u32).collect();
             let cost = input_of.iter().enumerate().map(|(o, &i)| cost_of(o, i)).collect();
             NearestField { input_of, cost }
         }
@@ -170,7 +153,8 @@ pub fn search(
             let mut window = settings.max_window_share * input.size_mm;
             while window >= settings.min_window_share * input.size_mm {
                 let around = input.graph.samples[field.input_of[o] as usize].position_mm;
-                let guess = around + DVec2::new(stream.signed(), stream.signed()) * window;
+                let signed = |s: &mut SplitMix64| 2.0 * s.next_unit() - 1.0;
+                let guess = around + DVec2::new(signed(&mut stream), signed(&mut stream)) * window;
                 if let Some(i) = input.nearest(guess, window) {
                     try_candidate(&mut field, i);
                 }

@@ -5,6 +5,8 @@
 
 use glam::DVec2;
 
+use crate::random::SplitMix64;
+
 use super::assignment::{MatchedPair, assign_edges, assign_positions, existence_votes, missing_samples};
 use super::{
     CurvePath, LEVELS, NearestField, SampleError, SampleGraph, SampleGrid, SearchSettings, Similarity,
@@ -31,20 +33,11 @@ impl Default for FillSettings {
     }
 }
 
-/// SplitMix64, for the patches' placement.
-fn random(state: &mut u64) -> f64 {
-    *state = state.wrapping_add(0x9e37_79b9_7f4a_7c15);
-    let mut z = *state;
-    z = (z ^ (z >> 30)).wrapping_mul(0xbf58_476d_1ce4_e5b9);
-    z = (z ^ (z >> 27)).wrapping_mul(0x94d0_49bb_1331_11eb);
-    ((z ^ (z >> 31)) >> 11) as f64 / (1u64 << 53) as f64
-}
-
 /// Patches (section 4.3.2): the rectangle `size_mm` is tiled with squares
 /// `patch_mm` wide, each filled with the samples (not the edges) of a
 /// random square of the input, leaving out samples within half a spacing
 /// of ones already placed.
-fn initialize(input: &SampleGraph, size_mm: DVec2, patch_mm: f64, delta_mm: f64, seed: &mut u64) -> SampleGraph {
+fn initialize(input: &SampleGraph, size_mm: DVec2, patch_mm: f64, delta_mm: f64, rng: &mut SplitMix64) -> SampleGraph {
     let (low, high) = bounds(input);
     let mut output = SampleGraph::default();
     let grid_of = |g: &SampleGraph| SampleGrid::new(g, delta_mm);
@@ -53,7 +46,7 @@ fn initialize(input: &SampleGraph, size_mm: DVec2, patch_mm: f64, delta_mm: f64,
         for i in 0..nx {
             let target = DVec2::new(i as f64, j as f64) * patch_mm;
             let room = (high - low - DVec2::splat(patch_mm)).max(DVec2::ZERO);
-            let source = low + DVec2::new(random(seed), random(seed)) * room;
+            let source = low + DVec2::new(rng.next_unit(), rng.next_unit()) * room;
             let placed = grid_of(&output);
             for sample in &input.samples {
                 let local = sample.position_mm - source;
@@ -90,17 +83,17 @@ pub fn fill_rectangle(
     settings: &FillSettings,
 ) -> Result<Vec<CurvePath>, SampleError> {
     let size = DVec2::new(width_mm, height_mm);
-    let mut seed = settings.seed;
+    let mut rng = SplitMix64::new(settings.seed);
     let mut paths: Option<Vec<CurvePath>> = None;
     for level in 0..LEVELS {
         let delta = settings.delta_mm * 2f64.powi((LEVELS - 1 - level) as i32);
         let radius = settings.radius_spacings * delta;
         let input = SampleGraph::new(exemplar, delta)?;
         let output = match &paths {
-            None => initialize(&input, size, 2.0 * radius, delta, &mut seed),
+            None => initialize(&input, size, 2.0 * radius, delta, &mut rng),
             Some(p) => SampleGraph::new(p, delta)?,
         };
-        let output = synthesize_level(&input, output, size, delta, radius, settings.iterations, &mut seed);
+        let output = synthesize_level(&input, output, size, delta, radius, settings.iterations, &mut rng);
         paths = Some(output.to_paths());
     }
     Ok(paths.unwrap_or_default())
@@ -114,7 +107,7 @@ fn synthesize_level(
     delta_mm: f64,
     radius_mm: f64,
     iterations: usize,
-    seed: &mut u64,
+    rng: &mut SplitMix64,
 ) -> SampleGraph {
     let similarity = Similarity::new(delta_mm);
     let project = |p: DVec2| p.clamp(DVec2::ZERO, size_mm);
@@ -123,7 +116,7 @@ fn synthesize_level(
     for step in 0..iterations {
         let mut search_settings = SearchSettings::new(radius_mm, delta_mm);
         search_settings.iterations = if step == 0 { 5 } else { 2 };
-        search_settings.seed = *seed ^ step as u64;
+        search_settings.seed = rng.state() ^ step as u64;
         let found = search(&output, input, field.as_ref(), &search_settings);
         let grid = SampleGrid::new(&output, radius_mm);
         let pairs: Vec<MatchedPair> = (0..output.samples.len())
@@ -158,7 +151,7 @@ fn synthesize_level(
         // New samples join the field at random; the next search places them.
         for p in added {
             output.add_sample(p);
-            kept.input_of.push((random(seed) * input.samples.len() as f64) as u32 % input.samples.len() as u32);
+            kept.input_of.push((rng.next_unit() * input.samples.len() as f64) as u32 % input.samples.len() as u32);
             kept.cost.push(f64::MAX);
         }
         field = Some(kept);

@@ -60,11 +60,8 @@ pub(crate) fn derived_seed(seed: u64, row: usize) -> u64 {
     if row == 0 {
         return seed;
     }
-    // SplitMix64's finalizer: nearby inputs give unrelated seeds.
-    let mut z = seed ^ (row as u64).wrapping_mul(0x9e37_79b9_7f4a_7c15);
-    z = (z ^ (z >> 30)).wrapping_mul(0xbf58_476d_1ce4_e5b9);
-    z = (z ^ (z >> 27)).wrapping_mul(0x94d0_49bb_1331_11eb);
-    (z ^ (z >> 31)).max(1)
+    // Nearby rows give unrelated seeds.
+    crate::random::mix(seed ^ crate::random::steps(row as u64)).max(1)
 }
 
 /// Each retry lays the rows closer by this share of the band.

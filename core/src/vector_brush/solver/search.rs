@@ -11,6 +11,7 @@ mod narrowing;
 use super::state::{Bucket, Interner, LengthGrid, NO_PARENT, PRUNED, State, Trace, UNKNOWN};
 use super::{BAND_MARGIN, CurveKind, STATE_BYTES, Solution, SolveOptions, tolerance_levels};
 use crate::control::{Control, StateCap};
+use crate::random::splitmix64;
 use crate::vector_brush::{Autocorrelation, MATCH_WEIGHT, PieceSet, Similarity, SolveError};
 
 /// Everything one search needs that does not change while it runs.
@@ -55,14 +56,6 @@ pub(super) struct Found {
     total: f64,
     pieces: Vec<usize>,
     offsets: Vec<f64>,
-}
-
-fn mix(mut x: u64) -> u64 {
-    // splitmix64: a well-spread hash of the seed and the seam.
-    x = x.wrapping_add(0x9e37_79b9_7f4a_7c15);
-    x = (x ^ (x >> 30)).wrapping_mul(0xbf58_476d_1ce4_e5b9);
-    x = (x ^ (x >> 27)).wrapping_mul(0x94d0_49bb_1331_11eb);
-    x ^ (x >> 31)
 }
 
 impl Problem<'_> {
@@ -122,7 +115,8 @@ impl Problem<'_> {
         // Vary the perturbation along the curve, in blocks of about a piece,
         // so that another seed changes the pattern everywhere, not just once.
         let block = u64::from(length / self.steps[a].max(1));
-        let h = mix(self.options.seed ^ mix(block << 32 | (a as u64) << 16 | b as u64));
+        // A well-spread hash of the seed and the seam.
+        let h = splitmix64(self.options.seed ^ splitmix64(block << 32 | (a as u64) << 16 | b as u64));
         base + self.jitter * (h >> 11) as f64 / (1u64 << 53) as f64
     }
 
