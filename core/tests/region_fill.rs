@@ -209,7 +209,7 @@ fn a_neighbourhood_matches_itself_anywhere_and_differs_from_another_pattern() {
 
 #[test]
 fn patch_match_finds_each_sample_of_a_moved_copy() {
-    use tracery_core::region_fill::{SearchSettings, search};
+    use tracery_core::region_fill::{Neighbourhoods, SearchSettings, search};
     // Not a whole number of spacings: samples right on the rim would be in
     // one neighbourhood and out of its moved twin by a rounding.
     let (delta_mm, radius_mm) = (1.5, 4.7);
@@ -224,7 +224,8 @@ fn patch_match_finds_each_sample_of_a_moved_copy() {
             sample.position_mm += shift;
         }
         let settings = SearchSettings::new(radius_mm, delta_mm);
-        let field = search(&output, &input, None, &settings);
+        let near = |g: &SampleGraph| Neighbourhoods::new(g, radius_mm);
+        let field = search((&output, &near(&output)), (&input, &near(&input)), None, &settings);
         assert_eq!(field.input_of.len(), output.samples.len());
         // Found: matched to the very sample it was copied from, or to one
         // whose neighbourhood is as alike (along a smooth stem many are):

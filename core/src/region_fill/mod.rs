@@ -21,7 +21,7 @@ pub use curve_path::CurvePath;
 pub use matching::{Matching, robust_match};
 pub use neighbourhood::{EDGE_WEIGHT, SampleGrid, Similarity, edge_difference, neighbourhood_distance, unmatched_cost};
 pub use sample_graph::{JOIN_TOLERANCE_MM, MAX_SEGMENTS, Sample, SampleError, SampleGraph, SampleKind};
-pub use search::{NearestField, SearchSettings, search};
+pub use search::{NearestField, Neighbourhoods, SearchSettings, search};
 pub use synthesis::{FillSettings, fill_rectangle};
 
 /// Levels of the sample hierarchy, coarse to fine.

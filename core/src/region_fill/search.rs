@@ -54,19 +54,37 @@ pub struct NearestField {
     pub cost: Vec<f64>,
 }
 
-/// Everything the search compares against: the input and its grid.
-struct Input<'a> {
-    graph: &'a SampleGraph,
-    grid: SampleGrid,
-    /// Each input sample's neighbourhood, found once.
-    members: Vec<Vec<u32>>,
-    size_mm: f64,
+impl NearestField {
+    /// Keeps the entries of the output samples `keep` says (as
+    /// [`SampleGraph::retain`] keeps the samples).
+    pub fn retain(&mut self, keep: &[bool]) {
+        self.input_of = kept(&self.input_of, keep);
+        self.cost = kept(&self.cost, keep);
+    }
 }
 
-impl Input<'_> {
-    /// The input sample nearest `p`, if any lies within reach.
-    fn nearest(&self, p: DVec2, reach_mm: f64) -> Option<u32> {
-        self.grid.within(self.graph, p, reach_mm).first().copied()
+/// The `values` whose entry in `keep` is true.
+fn kept<T: Copy>(values: &[T], keep: &[bool]) -> Vec<T> {
+    values.iter().zip(keep).filter(|(_, k)| **k).map(|(v, _)| *v).collect()
+}
+
+/// Every sample's neighbourhood in a graph, and the grid that found them:
+/// found once for the search and the assignment that follows it (and for
+/// an exemplar, once for every step of a level).
+#[derive(Clone, Debug)]
+pub struct Neighbourhoods {
+    /// The graph's samples on a grid, for finding samples near a point.
+    pub grid: SampleGrid,
+    /// Each sample's neighbourhood: the samples within the radius, nearest first.
+    pub members: Vec<Vec<u32>>,
+}
+
+impl Neighbourhoods {
+    /// The neighbourhoods of radius `radius_mm` of every sample of `graph`.
+    pub fn new(graph: &SampleGraph, radius_mm: f64) -> Neighbourhoods {
+        let grid = SampleGrid::new(graph, radius_mm);
+        let members = graph.samples.iter().map(|s| grid.within(graph, s.position_mm, radius_mm)).collect();
+        Neighbourhoods { grid, members }
     }
 }
 
@@ -75,10 +93,11 @@ impl Input<'_> {
 /// nearest-sample graph (forward, then backward), and tries for each the
 /// input sample its neighbours' matches suggest (propagation) and ones
 /// near its own match in shrinking windows (random search), keeping the
-/// cheapest by [`neighbourhood_distance`].
+/// cheapest by [`neighbourhood_distance`]. Both graphs' neighbourhoods
+/// must be of `settings.radius_mm`.
 pub fn search(
-    output: &SampleGraph,
-    input: &SampleGraph,
+    (output, output_near): (&SampleGraph, &Neighbourhoods),
+    (input, input_near): (&SampleGraph, &Neighbourhoods),
     start: Option<&NearestField>,
     settings: &SearchSettings,
 ) -> NearestField {
@@ -87,22 +106,17 @@ pub fn search(
         return NearestField::default();
     }
     let similarity = Similarity::new(settings.delta_mm);
-    let grid = SampleGrid::new(input, settings.radius_mm);
-    let members = (0..input.samples.len())
-        .map(|s| grid.within(input, input.samples[s].position_mm, settings.radius_mm))
-        .collect();
     let (low, high) = input
         .samples
         .iter()
         .fold((DVec2::MAX, DVec2::MIN), |(lo, hi), s| (lo.min(s.position_mm), hi.max(s.position_mm)));
-    let input = Input { graph: input, grid, members, size_mm: (high - low).max_element().max(settings.delta_mm) };
-    let out_grid = SampleGrid::new(output, settings.radius_mm);
-    let out_members: Vec<Vec<u32>> =
-        (0..n_out).map(|s| out_grid.within(output, output.samples[s].position_mm, settings.radius_mm)).collect();
+    let input_size_mm = (high - low).max_element().max(settings.delta_mm);
+    // The input sample nearest a point, if any lies within reach.
+    let nearest_input = |p: DVec2, reach_mm: f64| input_near.grid.within(input, p, reach_mm).first().copied();
     let nearest: Vec<Vec<u32>> = (0..n_out)
         .map(|s| {
             let reach = 2.0 * settings.radius_mm;
-            let found = out_grid.within(output, output.samples[s].position_mm, reach);
+            let found = output_near.grid.within(output, output.samples[s].position_mm, reach);
             found.into_iter().filter(|&n| n as usize != s).take(settings.nearest).collect()
         })
         .collect();
@@ -110,7 +124,7 @@ pub fn search(
     let mut stream = SplitMix64::new(settings.seed);
     let cost_of = |o: usize, i: u32| {
         let i = i as usize;
-        neighbourhood_distance(output, o, &out_members[o], input.graph, i, &input.members[i], &similarity).cost
+        neighbourhood_distance(output, o, &output_near.members[o], input, i, &input_near.members[i], &similarity).cost
     };
     let mut field = match start {
         // The previous step's matches, scored again: the samples have moved since.
@@ -119,8 +133,7 @@ pub fn search(
             NearestField { input_of: f.input_of.clone(), cost }
         }
         _ => {
-            let input_of: Vec<u32> =
-                (0..n_out).map(|_| stream.below(input.graph.samples.len() as u64) as u32).collect();
+            let input_of: Vec<u32> = (0..n_out).map(|_| stream.below(input.samples.len() as u64) as u32).collect();
             let cost = input_of.iter().enumerate().map(|(o, &i)| cost_of(o, i)).collect();
             NearestField { input_of, cost }
         }
@@ -143,19 +156,19 @@ pub fn search(
             };
             // Propagation: where a neighbour's match says this sample's should be.
             for &n in &nearest[o] {
-                let matched = input.graph.samples[field.input_of[n as usize] as usize].position_mm;
+                let matched = input.samples[field.input_of[n as usize] as usize].position_mm;
                 let guess = matched + (here - output.samples[n as usize].position_mm);
-                if let Some(i) = input.nearest(guess, settings.delta_mm) {
+                if let Some(i) = nearest_input(guess, settings.delta_mm) {
                     try_candidate(&mut field, i);
                 }
             }
             // Random search round the current match, in shrinking windows.
-            let mut window = settings.max_window_share * input.size_mm;
-            while window >= settings.min_window_share * input.size_mm {
-                let around = input.graph.samples[field.input_of[o] as usize].position_mm;
+            let mut window = settings.max_window_share * input_size_mm;
+            while window >= settings.min_window_share * input_size_mm {
+                let around = input.samples[field.input_of[o] as usize].position_mm;
                 let signed = |s: &mut SplitMix64| 2.0 * s.next_unit() - 1.0;
                 let guess = around + DVec2::new(signed(&mut stream), signed(&mut stream)) * window;
-                if let Some(i) = input.nearest(guess, window) {
+                if let Some(i) = nearest_input(guess, window) {
                     try_candidate(&mut field, i);
                 }
                 window *= 0.5;

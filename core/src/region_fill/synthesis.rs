@@ -9,7 +9,7 @@ use crate::random::SplitMix64;
 
 use super::assignment::{MatchedPair, assign_edges, assign_positions, existence_votes, missing_samples};
 use super::{
-    CurvePath, LEVELS, NearestField, SampleError, SampleGraph, SampleGrid, SearchSettings, Similarity,
+    CurvePath, LEVELS, NearestField, Neighbourhoods, SampleError, SampleGraph, SampleGrid, SearchSettings, Similarity,
     neighbourhood_distance, search,
 };
 
@@ -111,19 +111,21 @@ fn synthesize_level(
 ) -> SampleGraph {
     let similarity = Similarity::new(delta_mm);
     let project = |p: DVec2| p.clamp(DVec2::ZERO, size_mm);
-    let input_grid = SampleGrid::new(input, radius_mm);
+    // The exemplar's neighbourhoods are the same at every step of a level.
+    let input_near = Neighbourhoods::new(input, radius_mm);
     let mut field: Option<NearestField> = None;
     for step in 0..iterations {
         let mut search_settings = SearchSettings::new(radius_mm, delta_mm);
         search_settings.iterations = if step == 0 { 5 } else { 2 };
         search_settings.seed = rng.state() ^ step as u64;
-        let found = search(&output, input, field.as_ref(), &search_settings);
-        let grid = SampleGrid::new(&output, radius_mm);
+        // The output's, found once for the search and the votes that follow it.
+        let output_near = Neighbourhoods::new(&output, radius_mm);
+        let found = search((&output, &output_near), (input, &input_near), field.as_ref(), &search_settings);
         let pairs: Vec<MatchedPair> = (0..output.samples.len())
             .map(|o| {
-                let members_o = grid.within(&output, output.samples[o].position_mm, radius_mm);
+                let members_o = output_near.members[o].clone();
                 let centre_i = found.input_of[o];
-                let members_i = input_grid.within(input, input.samples[centre_i as usize].position_mm, radius_mm);
+                let members_i = input_near.members[centre_i as usize].clone();
                 let matching =
                     neighbourhood_distance(&output, o, &members_o, input, centre_i as usize, &members_i, &similarity);
                 MatchedPair { centre_o: o as u32, members_o, centre_i, members_i, matching }
@@ -137,16 +139,7 @@ fn synthesize_level(
         // holding them go, with their place in the field.
         let keep: Vec<bool> = existence_votes(output.samples.len(), &pairs).iter().map(|&i| i >= 0.5).collect();
         let mut kept = found;
-        let mut k = 0;
-        kept.input_of.retain(|_| {
-            k += 1;
-            keep[k - 1]
-        });
-        let mut k = 0;
-        kept.cost.retain(|_| {
-            k += 1;
-            keep[k - 1]
-        });
+        kept.retain(&keep);
         output.retain(&keep);
         // New samples join the field at random; the next search places them.
         for p in added {
