@@ -160,7 +160,13 @@ impl TraceryApp {
     pub fn busy(&self) -> bool {
         self.doc.curves.iter().any(|c| self.worker.is_stale(c.id))
             || self.gallery_curve().is_some_and(|id| self.gallery.is_stale(id))
-            || self.doc.model.curves.iter().any(|c| self.surface_worker.is_stale(c.id))
+            || self.model_stale()
+    }
+
+    /// Whether a curve or shade on the model, or the object made of them,
+    /// has a change not yet computed.
+    fn model_stale(&self) -> bool {
+        self.doc.model.drawn_curves().any(|c| self.surface_worker.is_stale(c.id))
             || self.doc.model.shades.iter().any(|c| self.shade_worker.is_stale(c.id))
             || self.assembly_worker.is_stale(ASSEMBLY)
     }
@@ -261,11 +267,7 @@ impl TraceryApp {
     /// The object made of every curve on the model, when it is up to date
     /// with all of them.
     pub fn model_object(&self) -> Option<Arc<tracery_core::Product>> {
-        let curves = self.doc.model.curves.iter().filter(|c| c.surface.points_mm.len() >= 2);
-        if curves.clone().any(|c| self.surface_worker.is_stale(c.id))
-            || self.doc.model.shades.iter().any(|c| self.shade_worker.is_stale(c.id))
-            || self.assembly_worker.is_stale(ASSEMBLY)
-        {
+        if self.model_stale() {
             return None;
         }
         match self.assembly_worker.state(ASSEMBLY) {
@@ -334,7 +336,7 @@ impl TraceryApp {
         let base = self.doc.model.base.clone();
         let mut ids = Vec::new();
         if let Ok(model) = self.caches.model(&self.doc.model, &base) {
-            for item in self.doc.model.curves.iter().filter(|c| c.surface.points_mm.len() >= 2) {
+            for item in self.doc.model.drawn_curves() {
                 match self.caches.exemplar(&self.doc, &item.exemplar) {
                     Ok(exemplar) => {
                         let job = SurfaceJob {
@@ -393,8 +395,11 @@ impl TraceryApp {
     /// Asks for the object once every curve on the model is done; returns whether it is being made.
     fn submit_assembly(&mut self, now: Instant) -> bool {
         let base = self.doc.model.base.clone();
-        let curves = self.doc.model.curves.iter().filter(|c| c.surface.points_mm.len() >= 2);
-        let bands = curves.map(|c| Self::finished_part(&self.surface_worker, c.id, part_role(&c.surface)));
+        let bands = self
+            .doc
+            .model
+            .drawn_curves()
+            .map(|c| Self::finished_part(&self.surface_worker, c.id, part_role(&c.surface)));
         let shades = self.doc.model.shades.iter().map(|c| Self::finished_part(&self.shade_worker, c.id, PartRole::Add));
         let parts: Option<Vec<_>> =
             bands.chain(shades).collect::<Option<Vec<_>>>().map(|parts| parts.into_iter().flatten().collect());

@@ -244,7 +244,7 @@ impl TraceryApp {
             },
             // The object on the model is one: every curve and shade is in it.
             Workspace::Model => {
-                let curves = self.doc.model.curves.iter().filter(|c| c.surface.points_mm.len() >= 2).map(|c| c.id);
+                let curves = self.doc.model.drawn_curves().map(|c| c.id);
                 curves.chain(self.doc.model.shades.iter().map(|c| c.id)).collect()
             }
         }

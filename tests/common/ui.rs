@@ -29,13 +29,7 @@ pub fn settle_model(harness: &mut Harness<'static, TraceryApp>) {
         harness.step();
         let app = harness.state();
         let done = !app.busy()
-            && app
-                .doc
-                .model
-                .curves
-                .iter()
-                .filter(|c| c.surface.points_mm.len() >= 2)
-                .all(|c| matches!(app.surface_job_state(c.id), Some(JobState::Done(_))));
+            && app.doc.model.drawn_curves().all(|c| matches!(app.surface_job_state(c.id), Some(JobState::Done(_))));
         if done || Instant::now() > deadline {
             break;
         }

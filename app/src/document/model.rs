@@ -7,7 +7,7 @@ use base64::Engine as _;
 use serde::{Deserialize, Serialize};
 use tracery_core::export::write_stl;
 use tracery_core::mesh::{Mesh, read_stl};
-use tracery_core::surface::{BASE_NAMES, ShadeSettings, SurfaceSettings, builtin_base};
+use tracery_core::surface::{BASE_NAMES, MIN_POINTS, ShadeSettings, SurfaceSettings, builtin_base};
 use tracery_core::vector_brush;
 
 use super::{DocumentError, ExemplarRef, file_stem, unique_name};
@@ -155,6 +155,12 @@ impl ModelScene {
         let stl_base64 = base64::engine::general_purpose::STANDARD.encode(bytes);
         self.imported.push(ImportedModel { name: name.clone(), stl_base64 });
         Ok(BaseRef::Imported(name))
+    }
+
+    /// The curves with points enough to carry a pattern: those that have a
+    /// job, and a part in the object.
+    pub fn drawn_curves(&self) -> impl Iterator<Item = &SurfaceCurveItem> + Clone {
+        self.curves.iter().filter(|c| c.surface.points_mm.len() >= MIN_POINTS)
     }
 
     /// The curve with `id`.

@@ -176,7 +176,7 @@ fn part_status_ui(app: &TraceryApp, ui: &mut egui::Ui) {
         return;
     };
     let id = item.id;
-    if item.surface.points_mm.len() < 2 {
+    if item.surface.points_mm.len() < tracery_core::surface::MIN_POINTS {
         ui.label(format!("Curve {id}: pick at least two points on the model"));
         return;
     }
@@ -195,7 +195,7 @@ fn part_status_ui(app: &TraceryApp, ui: &mut egui::Ui) {
 /// with only the warnings the combining itself gave: each part's are on its own line.
 fn object_status_ui(app: &TraceryApp, ui: &mut egui::Ui) {
     let holds_model = app.doc.model.holds_model();
-    let curves = app.doc.model.curves.iter().filter(|c| c.surface.points_mm.len() >= 2).count();
+    let curves = app.doc.model.drawn_curves().count();
     let parts = curves + app.doc.model.shades.len();
     if parts < 2 && !holds_model {
         return;
