@@ -10,6 +10,7 @@
 use glam::{DMat3, DVec3};
 
 use super::SurfaceMesh;
+use super::surface_mesh::for_each_corner;
 use crate::mesh::Mesh;
 
 /// Why a model could not be hollowed.
@@ -172,22 +173,15 @@ fn inward_offsets(surface: &SurfaceMesh) -> Vec<DVec3> {
     let mut normal_matrix = vec![DMat3::ZERO; positions.len()];
     let mut normal_sum = vec![DVec3::ZERO; positions.len()];
     let mut weight = vec![0.0; positions.len()];
-    for (face, corners) in surface.triangles().iter().enumerate() {
-        let n = surface.face_normal(face as u32);
-        let outer = DMat3::from_cols(n * n.x, n * n.y, n * n.z);
-        for k in 0..3 {
-            let v = corners[k] as usize;
-            let p = positions[v];
-            let angle = (positions[corners[(k + 1) % 3] as usize] - p)
-                .angle_between(positions[corners[(k + 2) % 3] as usize] - p);
-            if !angle.is_finite() {
-                continue;
-            }
-            normal_matrix[v] += outer * angle;
-            normal_sum[v] += n * angle;
-            weight[v] += angle;
+    for_each_corner(positions, surface.triangles(), |v, n, angle| {
+        if !angle.is_finite() {
+            return;
         }
-    }
+        let v = v as usize;
+        normal_matrix[v] += DMat3::from_cols(n * n.x, n * n.y, n * n.z) * angle;
+        normal_sum[v] += n * angle;
+        weight[v] += angle;
+    });
     (0..positions.len())
         .map(|v| {
             let smooth = surface.vertex_normal(v as u32);

@@ -129,14 +129,9 @@ impl SurfaceMesh {
         // Normals weighted by angle, so that how a flat area is cut into
         // triangles does not tilt them.
         let mut vertex_normals = vec![DVec3::ZERO; n];
-        for t in &mesh.triangles {
-            let p = t.map(|i| positions[i as usize]);
-            let normal = (p[1] - p[0]).cross(p[2] - p[0]).normalize_or_zero();
-            for k in 0..3 {
-                let (e1, e2) = (p[(k + 1) % 3] - p[k], p[(k + 2) % 3] - p[k]);
-                vertex_normals[t[k] as usize] += normal * e1.angle_between(e2);
-            }
-        }
+        for_each_corner(&positions, &mesh.triangles, |vertex, normal, angle| {
+            vertex_normals[vertex as usize] += normal * angle;
+        });
         for normal in &mut vertex_normals {
             *normal = normal.normalize_or_zero();
         }
@@ -235,5 +230,20 @@ impl SurfaceMesh {
         let v = ((d11 * d20 - d01 * d21) / denom).clamp(0.0, 1.0);
         let w = ((d00 * d21 - d01 * d20) / denom).clamp(0.0, 1.0 - v);
         [1.0 - v - w, v, w]
+    }
+}
+
+/// Calls `visit(vertex, face_normal, angle)` for each corner of each
+/// triangle: the unit normal of its face (zero for a degenerate face) and
+/// the angle between its two edges, radians. Angle-weighted sums over a
+/// vertex's corners do not depend on how a flat area is cut into triangles.
+pub(super) fn for_each_corner(positions: &[DVec3], triangles: &[[u32; 3]], mut visit: impl FnMut(u32, DVec3, f64)) {
+    for t in triangles {
+        let p = t.map(|i| positions[i as usize]);
+        let normal = (p[1] - p[0]).cross(p[2] - p[0]).normalize_or_zero();
+        for k in 0..3 {
+            let (e1, e2) = (p[(k + 1) % 3] - p[k], p[(k + 2) % 3] - p[k]);
+            visit(t[k], normal, e1.angle_between(e2));
+        }
     }
 }
