@@ -8,6 +8,7 @@ use smallvec::SmallVec;
 
 use super::CurvePath;
 use crate::disjoint_sets::DisjointSets;
+use crate::geom::closest_on_segment;
 
 /// What a sample is, by the number of its edges.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -341,9 +342,9 @@ fn find_cuts(paths: &[&CurvePath]) -> (Vec<Vec<Cut>>, Vec<DVec2>) {
     let ends: Vec<DVec2> = raw.iter().map(|r| r.2).collect();
     for end in ends {
         for &(p, i, a, b) in &segments {
-            let t = ((end - a).dot(b - a) / (b - a).length_squared().max(1e-300)).clamp(0.0, 1.0);
-            if (a + (b - a) * t).distance(end) <= JOIN_TOLERANCE_MM {
-                raw.push((p, Cut { segment: i, t, point: 0 }, a + (b - a) * t));
+            let (t, at) = closest_on_segment(end, a, b);
+            if at.distance(end) <= JOIN_TOLERANCE_MM {
+                raw.push((p, Cut { segment: i, t, point: 0 }, at));
             }
         }
     }
