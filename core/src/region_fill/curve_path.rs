@@ -57,25 +57,4 @@ impl CurvePath {
     pub fn length_mm(&self) -> f64 {
         (0..self.segment_count()).map(|i| self.segment_length(i)).sum()
     }
-
-    /// The point at arc length `s` (wrapping round a loop).
-    ///
-    /// ```
-    /// use tracery_core::DVec2;
-    /// use tracery_core::region_fill::CurvePath;
-    /// let square = CurvePath { points_mm: vec![DVec2::ZERO, DVec2::X, DVec2::ONE, DVec2::Y], closed: true };
-    /// assert!(square.point_at(5.5).distance(DVec2::new(1.0, 0.5)) < 1e-12);
-    /// ```
-    pub fn point_at(&self, s: f64) -> DVec2 {
-        let total = self.length_mm();
-        let mut s = if self.closed && total > 0.0 { s.rem_euclid(total) } else { s.clamp(0.0, total) };
-        for i in 0..self.segment_count() {
-            let length = self.segment_length(i);
-            if s <= length || i + 1 == self.segment_count() {
-                return self.segment_point(i, if length > 0.0 { (s / length).min(1.0) } else { 0.0 });
-            }
-            s -= length;
-        }
-        self.points_mm.first().copied().unwrap_or_default()
-    }
 }

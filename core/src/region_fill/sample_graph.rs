@@ -7,6 +7,7 @@ use glam::DVec2;
 use smallvec::SmallVec;
 
 use super::CurvePath;
+use crate::curve::Curve;
 use crate::disjoint_sets::DisjointSets;
 use crate::geom::closest_on_segment;
 
@@ -254,6 +255,8 @@ impl SampleGraph {
         point_sample: &mut [u32],
         delta_mm: f64,
     ) {
+        // Points at arc lengths come from the curve (a path of no length adds nothing).
+        let Ok(curve) = Curve::from_polyline(&path.points_mm, path.closed) else { return };
         // Stretches between consecutive cuts; a closed path wraps from its last cut to its first.
         let mut stops: Vec<(f64, u32)> = Vec::new();
         let lengths = path.cumulative_lengths();
@@ -266,7 +269,7 @@ impl SampleGraph {
         if path.closed && stops.is_empty() {
             // A loop touching nothing: one stretch all around from its start.
             let first = self.add_sample(path.points_mm[0]);
-            self.sample_stretch(path, 0.0, total, first, first, delta_mm);
+            self.sample_stretch(&curve, 0.0, total, first, first, delta_mm);
             return;
         }
         if path.closed {
@@ -279,21 +282,21 @@ impl SampleGraph {
             // first segments, as at a spiral's tight centre) leave no loop.
             let loop_back = a == b && to - from <= 4.0 * JOIN_TOLERANCE_MM;
             if !loop_back && (to - from > 1e-12 || a != b) {
-                self.sample_stretch(path, from, to, a, b, delta_mm);
+                self.sample_stretch(&curve, from, to, a, b, delta_mm);
             }
         }
     }
 
-    /// Samples the stretch of `path` from arc length `from` to `to` (past
+    /// Samples the stretch of `curve` from arc length `from` to `to` (past
     /// the total for a loop) between samples `a` and `b`.
-    fn sample_stretch(&mut self, path: &CurvePath, from: f64, to: f64, a: u32, b: u32, delta_mm: f64) {
+    fn sample_stretch(&mut self, curve: &Curve, from: f64, to: f64, a: u32, b: u32, delta_mm: f64) {
         let intervals = ((to - from) / delta_mm).ceil().max(1.0) as usize;
         // A loop through one point needs at least three samples to be a loop.
         let intervals = if a == b { intervals.max(3) } else { intervals };
         let mut previous = a;
         for k in 1..intervals {
             let s = from + (to - from) * k as f64 / intervals as f64;
-            let next = self.add_sample(path.point_at(s));
+            let next = self.add_sample(curve.point(s));
             self.connect(previous, next);
             previous = next;
         }
