@@ -9,7 +9,7 @@ use std::path::Path;
 use tracery::TraceryApp;
 use tracery::document::{ExemplarRef, ModeSettings, SurfaceCurveItem, VectorBrushItem};
 use tracery_core::DVec2;
-use tracery_core::surface::{SurfaceMesh, builtin_base};
+use tracery_core::surface::{SurfaceMesh, SurfaceOutput, builtin_base};
 use tracery_core::vector_brush::Target;
 
 #[path = "common/drive.rs"]
@@ -95,6 +95,32 @@ fn regenerate_raster_screenshot() {
     save(&mut harness, "raster-brush.png");
 }
 
+/// Adds a closed curve of chain through six points round `model` at
+/// `(radius, z)` mm, moved onto its surface as picked points would be;
+/// returns its id.
+fn add_chain_ring(
+    app: &mut TraceryApp,
+    model: &SurfaceMesh,
+    (radius_mm, z_mm): (f64, f64),
+    band_mm: f64,
+    output: SurfaceOutput,
+) -> u64 {
+    let mut chain = SurfaceCurveItem::default();
+    chain.settings.band_mm = band_mm;
+    chain.surface.points_mm = (0..6)
+        .map(|k| {
+            let a = k as f64 / 6.0 * std::f64::consts::TAU;
+            model.closest_point([radius_mm * a.cos(), radius_mm * a.sin(), z_mm]).position_mm.to_array()
+        })
+        .collect();
+    chain.surface.closed = true;
+    chain.surface.output = output;
+    // A new curve starts with no points; the ring's are put back.
+    let id = app.doc.add_surface_curve(&chain);
+    app.doc.model.curve_mut(id).unwrap().surface = chain.surface;
+    id
+}
+
 #[test]
 #[ignore = "writes screenshots/; run on purpose"]
 fn regenerate_model_screenshot() {
@@ -108,18 +134,7 @@ fn regenerate_model_screenshot() {
         // on its surface.
         let vase = SurfaceMesh::new(builtin_base("vase").unwrap()).unwrap();
         let on_vase = |p: [f64; 3]| vase.closest_point(p).position_mm.to_array();
-        let ring = (0..6)
-            .map(|k| {
-                let a = k as f64 / 6.0 * std::f64::consts::TAU;
-                on_vase([30.0 * a.cos(), 30.0 * a.sin(), 28.0])
-            })
-            .collect();
-        let mut chain = SurfaceCurveItem::default();
-        chain.settings.band_mm = 9.0;
-        chain.surface.points_mm = ring;
-        chain.surface.closed = true;
-        let id = app.doc.add_surface_curve(&chain);
-        app.doc.model.curve_mut(id).unwrap().surface = chain.surface.clone();
+        let id = add_chain_ring(app, &vase, (30.0, 28.0), 9.0, SurfaceOutput::Pattern);
         let mut vine = SurfaceCurveItem { exemplar: ExemplarRef::Builtin("vine".into()), ..Default::default() };
         vine.settings.holes = Target::Exactly(0);
         vine.settings.band_mm = 10.0;
@@ -146,19 +161,7 @@ fn regenerate_lamp_screenshot() {
         let app = harness.state_mut();
         // A ring of chain embossed round the foot, as points picked round it.
         let cone = SurfaceMesh::new(builtin_base("cone").unwrap()).unwrap();
-        let ring = (0..6)
-            .map(|k| {
-                let a = k as f64 / 6.0 * std::f64::consts::TAU;
-                cone.closest_point([25.0 * a.cos(), 25.0 * a.sin(), 16.0]).position_mm.to_array()
-            })
-            .collect();
-        let mut chain = SurfaceCurveItem::default();
-        chain.settings.band_mm = 8.0;
-        chain.surface.points_mm = ring;
-        chain.surface.closed = true;
-        chain.surface.output = tracery_core::surface::SurfaceOutput::Emboss;
-        let id = app.doc.add_surface_curve(&chain);
-        app.doc.model.curve_mut(id).unwrap().surface = chain.surface.clone();
+        add_chain_ring(app, &cone, (25.0, 16.0), 8.0, SurfaceOutput::Emboss);
         app.selected_surface = None;
     }
     settle_model(&mut harness);
