@@ -273,3 +273,42 @@ fn a_crackle_fill_stays_in_its_rectangle_and_keeps_the_exemplars_junctions() {
         "junctions: exemplar {exemplar_junctions:.3}, fill {fill_junctions:.3}"
     );
 }
+
+#[test]
+fn a_bounded_comparison_gives_up_only_when_the_full_one_is_no_cheaper() {
+    use tracery_core::region_fill::{NeighbourhoodPair, SampleGrid, Similarity, neighbourhood_distance};
+    let (delta_mm, radius_mm) = (1.5, 4.7);
+    let similarity = Similarity::new(delta_mm);
+    let crackle = SampleGraph::new(&builtin_curves("crackle").unwrap(), delta_mm).unwrap();
+    let vine = SampleGraph::new(&builtin_curves("vine").unwrap(), delta_mm).unwrap();
+    let (cg, vg) = (SampleGrid::new(&crackle, radius_mm), SampleGrid::new(&vine, radius_mm));
+    let (mut pruned, mut kept) = (0, 0);
+    for o in (0..crackle.samples.len()).step_by(17) {
+        let members_o = cg.within(&crackle, crackle.samples[o].position_mm, radius_mm);
+        for i in (0..vine.samples.len()).step_by(23) {
+            let members_i = vg.within(&vine, vine.samples[i].position_mm, radius_mm);
+            let full = neighbourhood_distance(&crackle, o, &members_o, &vine, i, &members_i, &similarity);
+            let pair = NeighbourhoodPair {
+                output: &crackle,
+                s_o: o,
+                members_o: &members_o,
+                input: &vine,
+                s_i: i,
+                members_i: &members_i,
+            };
+            for bound in [0.5 * full.cost, 0.999 * full.cost, 1.001 * full.cost + 1e-9, 2.0 * full.cost + 1e-9] {
+                match pair.distance_below(&similarity, bound) {
+                    None => {
+                        assert!(full.cost >= bound - 1e-9, "gave up below {bound} on a pair costing {}", full.cost);
+                        pruned += 1;
+                    }
+                    Some(m) => {
+                        assert!((m.cost - full.cost).abs() < 1e-9, "{} against {}", m.cost, full.cost);
+                        kept += 1;
+                    }
+                }
+            }
+        }
+    }
+    assert!(pruned > 0 && kept > 0, "both outcomes tried: {pruned} pruned, {kept} kept");
+}

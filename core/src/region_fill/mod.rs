@@ -19,7 +19,9 @@ pub use assignment::{MatchedPair, assign_edges, assign_positions, existence_vote
 pub use builtin::{BUILTIN_CURVES, builtin_curves};
 pub use curve_path::CurvePath;
 pub use matching::{Matching, robust_match};
-pub use neighbourhood::{EDGE_WEIGHT, SampleGrid, Similarity, edge_difference, neighbourhood_distance, unmatched_cost};
+pub use neighbourhood::{
+    EDGE_WEIGHT, NeighbourhoodPair, SampleGrid, Similarity, edge_difference, neighbourhood_distance, unmatched_cost,
+};
 pub use sample_graph::{JOIN_TOLERANCE_MM, MAX_SEGMENTS, Sample, SampleError, SampleGraph, SampleKind};
 pub use search::{NearestField, Neighbourhoods, SearchSettings, search};
 pub use synthesis::{FillSettings, fill_rectangle};

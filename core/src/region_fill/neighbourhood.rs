@@ -7,6 +7,7 @@ use glam::DVec2;
 use pathfinding::kuhn_munkres::kuhn_munkres;
 use pathfinding::matrix::Matrix;
 use rustc_hash::FxHashMap;
+use smallvec::SmallVec;
 
 use super::{Matching, SampleGraph, robust_match};
 
@@ -57,17 +58,46 @@ fn cell_of(p: DVec2, cell_mm: f64) -> (i64, i64) {
     ((p.x / cell_mm).floor() as i64, (p.y / cell_mm).floor() as i64)
 }
 
+/// Edges a sample has at most before [`edge_difference`] leaves the
+/// exhaustive matching for Kuhn–Munkres.
+const EXHAUSTIVE_EDGES: usize = 4;
+
 /// The edges of sample `s` as vectors to its neighbours, mm.
-fn edge_vectors(graph: &SampleGraph, s: usize) -> Vec<DVec2> {
+fn edge_vectors(graph: &SampleGraph, s: usize) -> SmallVec<[DVec2; 6]> {
     let p = graph.samples[s].position_mm;
     graph.neighbours[s].iter().map(|&n| graph.samples[n as usize].position_mm - p).collect()
 }
 
+/// The least sum of `|rows[r] − columns[c]|` over one-to-one matchings of
+/// every row, trying them all: samples have few edges (two along a path,
+/// three or four at a junction), and this is called for every pair of
+/// samples the search compares.
+fn least_matching_sum(rows: &[DVec2], columns: &[DVec2], used: &mut [bool; 8]) -> f64 {
+    let Some((first, rest)) = rows.split_first() else {
+        return 0.0;
+    };
+    let mut best = f64::INFINITY;
+    for c in 0..columns.len() {
+        if used[c] {
+            continue;
+        }
+        let here = first.distance(columns[c]);
+        if here >= best {
+            continue;
+        }
+        used[c] = true;
+        best = best.min(here + least_matching_sum(rest, columns, used));
+        used[c] = false;
+    }
+    best
+}
+
 /// How differently samples `a` of `graph_a` and `b` of `graph_b` are
 /// connected (equation 5): their edge vectors matched one to one to
-/// minimize the sum of differences (Kuhn–Munkres), that sum, plus
-/// `beta_mm` for each edge one has more than the other. A sample without
-/// edges (newly added to an output) differs from nothing: 0.
+/// minimize the sum of differences, that sum, plus `beta_mm` for each edge
+/// one has more than the other. A sample without edges (newly added to an
+/// output) differs from nothing: 0. Up to four edges a side every matching
+/// is tried; more go to Kuhn–Munkres.
 ///
 /// ```
 /// use tracery_core::DVec2;
@@ -77,14 +107,17 @@ fn edge_vectors(graph: &SampleGraph, s: usize) -> Vec<DVec2> {
 /// assert!((edge_difference(&line, 2, &line, 0, 1.0) - 1.0).abs() < 1e-9);
 /// ```
 pub fn edge_difference(graph_a: &SampleGraph, a: usize, graph_b: &SampleGraph, b: usize, beta_mm: f64) -> f64 {
-    let (ea, eb) = (edge_vectors(graph_a, a), edge_vectors(graph_b, b));
-    if ea.is_empty() {
+    if graph_a.neighbours[a].is_empty() {
         return 0.0;
     }
+    let (ea, eb) = (edge_vectors(graph_a, a), edge_vectors(graph_b, b));
     let (rows, columns) = if ea.len() <= eb.len() { (&ea, &eb) } else { (&eb, &ea) };
     let extra = beta_mm * (columns.len() - rows.len()) as f64;
     if rows.is_empty() {
         return extra;
+    }
+    if columns.len() <= EXHAUSTIVE_EDGES {
+        return least_matching_sum(rows, columns, &mut [false; 8]) + extra;
     }
     // Nanometres, as integers for the solver; maximizing the negated sum.
     let weights =
@@ -129,14 +162,78 @@ pub fn neighbourhood_distance(
     members_i: &[u32],
     similarity: &Similarity,
 ) -> Matching {
-    let (centre_o, centre_i) = (output.samples[s_o].position_mm, input.samples[s_i].position_mm);
-    let cost = |o: usize, i: usize| {
-        let (so, si) = (members_o[o] as usize, members_i[i] as usize);
-        let offset_o = output.samples[so].position_mm - centre_o;
-        let offset_i = input.samples[si].position_mm - centre_i;
-        offset_o.distance(offset_i) + EDGE_WEIGHT * edge_difference(output, so, input, si, similarity.delta_mm)
-    };
-    let unmatched: Vec<f64> =
-        members_o.iter().map(|&s| unmatched_cost(output, s as usize, similarity.delta_mm)).collect();
-    robust_match(members_o.len(), members_i.len(), &cost, &unmatched)
+    let pair = NeighbourhoodPair { output, s_o, members_o, input, s_i, members_i };
+    pair.distance_below(similarity, f64::INFINITY).unwrap_or(Matching { input_of: Vec::new(), cost: f64::INFINITY })
+}
+
+/// Two neighbourhoods to compare: output sample `s_o` with its members,
+/// and input sample `s_i` with its.
+#[derive(Clone, Copy, Debug)]
+pub struct NeighbourhoodPair<'a> {
+    /// The output graph.
+    pub output: &'a SampleGraph,
+    /// The output neighbourhood's centre.
+    pub s_o: usize,
+    /// The output neighbourhood's samples.
+    pub members_o: &'a [u32],
+    /// The input graph.
+    pub input: &'a SampleGraph,
+    /// The input neighbourhood's centre.
+    pub s_i: usize,
+    /// The input neighbourhood's samples.
+    pub members_i: &'a [u32],
+}
+
+impl NeighbourhoodPair<'_> {
+    /// [`neighbourhood_distance`], or `None` as soon as it is sure to be at
+    /// least `bound`: each output sample costs at least its cheapest pair or
+    /// its unmatched cost, whichever is less, and the offsets alone are
+    /// checked against that before the edges are compared. The search
+    /// rejects most candidates this way without solving the assignment.
+    pub fn distance_below(&self, similarity: &Similarity, bound: f64) -> Option<Matching> {
+        let (output, input) = (self.output, self.input);
+        let (n, m) = (self.members_o.len(), self.members_i.len());
+        let (centre_o, centre_i) = (output.samples[self.s_o].position_mm, input.samples[self.s_i].position_mm);
+        let offsets_i: SmallVec<[DVec2; 64]> =
+            self.members_i.iter().map(|&s| input.samples[s as usize].position_mm - centre_i).collect();
+        let unmatched: SmallVec<[f64; 64]> =
+            self.members_o.iter().map(|&s| unmatched_cost(output, s as usize, similarity.delta_mm)).collect();
+        let mut costs = vec![0.0; n * m];
+        let mut lower = 0.0;
+        for (o, &so) in self.members_o.iter().enumerate() {
+            let offset_o = output.samples[so as usize].position_mm - centre_o;
+            let row = &mut costs[o * m..(o + 1) * m];
+            let mut least = unmatched[o];
+            for (c, offset_i) in row.iter_mut().zip(&offsets_i) {
+                *c = offset_o.distance(*offset_i);
+                least = least.min(*c);
+            }
+            lower += least;
+        }
+        if lower >= bound {
+            return None;
+        }
+        lower = 0.0;
+        for (o, &so) in self.members_o.iter().enumerate() {
+            let row = &mut costs[o * m..(o + 1) * m];
+            let mut least = unmatched[o];
+            for (c, &si) in row.iter_mut().zip(self.members_i) {
+                // A pair dearer than leaving the output sample unmatched is
+                // never better than that (there is an unmatched place for
+                // every row), so it is forbidden without comparing its edges.
+                if *c < unmatched[o] {
+                    *c += EDGE_WEIGHT * edge_difference(output, so as usize, input, si as usize, similarity.delta_mm);
+                }
+                if *c >= unmatched[o] {
+                    *c = f64::INFINITY;
+                }
+                least = least.min(*c);
+            }
+            lower += least;
+        }
+        if lower >= bound {
+            return None;
+        }
+        Some(robust_match(n, m, &|o, i| costs[o * m + i], &unmatched))
+    }
 }

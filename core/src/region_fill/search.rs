@@ -4,7 +4,7 @@
 
 use glam::DVec2;
 
-use super::{SampleGraph, SampleGrid, Similarity, neighbourhood_distance};
+use super::{NeighbourhoodPair, SampleGraph, SampleGrid, Similarity};
 use crate::random::SplitMix64;
 
 /// How the search runs.
@@ -122,10 +122,21 @@ pub fn search(
         .collect();
     let order = breadth_first(&nearest);
     let mut stream = SplitMix64::new(settings.seed);
-    let cost_of = |o: usize, i: u32| {
+    // The cost of matching output sample `o` to input sample `i`, or
+    // infinity once it is sure to be at least `bound`.
+    let cost_below = |o: usize, i: u32, bound: f64| {
         let i = i as usize;
-        neighbourhood_distance(output, o, &output_near.members[o], input, i, &input_near.members[i], &similarity).cost
+        let pair = NeighbourhoodPair {
+            output,
+            s_o: o,
+            members_o: &output_near.members[o],
+            input,
+            s_i: i,
+            members_i: &input_near.members[i],
+        };
+        pair.distance_below(&similarity, bound).map_or(f64::INFINITY, |m| m.cost)
     };
+    let cost_of = |o: usize, i: u32| cost_below(o, i, f64::INFINITY);
     let mut field = match start {
         // The previous step's matches, scored again: the samples have moved since.
         Some(f) if f.input_of.len() == n_out => {
@@ -148,7 +159,7 @@ pub fn search(
                 if i == field.input_of[o] {
                     return;
                 }
-                let c = cost_of(o, i);
+                let c = cost_below(o, i, field.cost[o]);
                 if c < field.cost[o] {
                     field.input_of[o] = i;
                     field.cost[o] = c;

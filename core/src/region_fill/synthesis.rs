@@ -4,6 +4,7 @@
 //! graph made into paths and sampled again between levels.
 
 use glam::DVec2;
+use rayon::prelude::*;
 
 use crate::random::SplitMix64;
 
@@ -121,7 +122,9 @@ fn synthesize_level(
         // The output's, found once for the search and the votes that follow it.
         let output_near = Neighbourhoods::new(&output, radius_mm);
         let found = search((&output, &output_near), (input, &input_near), field.as_ref(), &search_settings);
+        // Each pair is matched alone: in parallel.
         let pairs: Vec<MatchedPair> = (0..output.samples.len())
+            .into_par_iter()
             .map(|o| {
                 let members_o = output_near.members[o].clone();
                 let centre_i = found.input_of[o];
