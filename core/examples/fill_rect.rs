@@ -6,7 +6,7 @@
 //! (`all`: every built-in, one row each, into `docs/fill-contact-sheet.png` by default).
 
 use tiny_skia::{Color, Paint, PathBuilder, Pixmap, Stroke, Transform};
-use tracery_core::region_fill::{BUILTIN_CURVES, CurvePath, FillSettings, builtin_curves, fill_rectangle};
+use tracery_core::region_fill::{BUILTIN_CURVES, CurvePath, Settings, builtin_curves, fill_rectangle};
 
 /// Pixels per millimetre.
 const SCALE: f32 = 8.0;
@@ -43,7 +43,7 @@ fn main() {
     for (row, name) in names.iter().enumerate() {
         let exemplar = builtin_curves(name).expect("a built-in curve exemplar");
         let start = std::time::Instant::now();
-        let paths = fill_rectangle(&exemplar, 60.0, 40.0, &FillSettings::default()).expect("a fill");
+        let paths = fill_rectangle(&exemplar, 60.0, 40.0, &Settings::default()).expect("a fill");
         eprintln!("{name}: {} paths in {:.2} s", paths.len(), start.elapsed().as_secs_f64());
         let top = row as f32 * row_mm + 4.0;
         draw(&mut sheet, &exemplar, (2.0, top), 40.0);

@@ -255,9 +255,9 @@ fn degree_shares(paths: &[CurvePath], delta_mm: f64) -> (f64, f64) {
 
 #[test]
 fn a_crackle_fill_stays_in_its_rectangle_and_keeps_the_exemplars_junctions() {
-    use tracery_core::region_fill::{FillSettings, fill_rectangle};
+    use tracery_core::region_fill::{Settings, fill_rectangle};
     let exemplar = builtin_curves("crackle").unwrap();
-    let settings = FillSettings::default();
+    let settings = Settings::default();
     let (width, height) = (36.0, 24.0);
     let paths = fill_rectangle(&exemplar, width, height, &settings).unwrap();
     let all: Vec<DVec2> = paths.iter().flat_map(|p| p.points_mm.iter().copied()).collect();

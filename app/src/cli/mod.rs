@@ -2,6 +2,7 @@
 //! the outputs and `--report`. An error exits non-zero with one line on
 //! stderr and leaves no partial file.
 
+mod fill;
 mod output;
 mod raster;
 mod shade;
@@ -12,6 +13,7 @@ use anyhow::{Context, Result};
 use clap::{Parser, Subcommand};
 use tracery_core::vector_brush::{BUILTIN_NAMES, PieceSet, SliceOptions, builtin};
 
+pub use fill::FillArgs;
 pub use output::{OutputArgs, Report};
 pub use raster::RasterArgs;
 pub use shade::ShadeArgs;
@@ -43,6 +45,9 @@ enum Command {
         /// The built-in base models for `tracery surface` instead.
         #[arg(long, conflicts_with = "raster")]
         bases: bool,
+        /// The curve exemplars for `tracery fill` instead.
+        #[arg(long, conflicts_with_all = ["raster", "bases"])]
+        curves: bool,
     },
     /// Vector brush: synthesize a pattern along a curve and write STL, SVG and a report.
     Synth(Box<SynthArgs>),
@@ -52,6 +57,8 @@ enum Command {
     Shade(Box<ShadeArgs>),
     /// Pattern on a 3D model: vector-brush pattern along a curve through points picked on a mesh, written as a shell (STL, 3MF), the flat pattern (SVG) and a report.
     Surface(Box<SurfaceArgs>),
+    /// Region fill: a region filled with curves like an exemplar's, written as stroked paths (SVG), a printable solid (STL, 3MF) and a report.
+    Fill(Box<FillArgs>),
 }
 
 fn list_raster() -> Result<()> {
@@ -79,6 +86,16 @@ fn list_bases() -> Result<()> {
     Ok(())
 }
 
+fn list_curves() -> Result<()> {
+    for name in tracery_core::region_fill::BUILTIN_CURVES {
+        let exemplar = tracery_core::region_fill::CurveExemplar::builtin(name)
+            .with_context(|| format!("drawing built-in '{name}'"))?;
+        let length: f64 = exemplar.paths.iter().map(|p| p.length_mm()).sum();
+        println!("{name:10} {:3} path(s) {:6.0} mm of curve", exemplar.paths.len(), length);
+    }
+    Ok(())
+}
+
 fn list() -> Result<()> {
     for name in BUILTIN_NAMES {
         let exemplar = builtin(name).with_context(|| format!("loading built-in exemplar '{name}'"))?;
@@ -98,12 +115,14 @@ fn list() -> Result<()> {
 pub fn run(cli: Cli) -> Result<()> {
     match cli.command {
         Some(Command::List { bases: true, .. }) => list_bases(),
+        Some(Command::List { curves: true, .. }) => list_curves(),
         Some(Command::List { raster: false, .. }) => list(),
         Some(Command::List { raster: true, .. }) => list_raster(),
         Some(Command::Synth(args)) => synth::run(*args),
         Some(Command::Raster(args)) => raster::run(*args),
         Some(Command::Shade(args)) => shade::run(*args),
         Some(Command::Surface(args)) => surface::run(*args),
+        Some(Command::Fill(args)) => fill::run(*args),
         None => Ok(()),
     }
 }

@@ -7,7 +7,8 @@ use anyhow::{Result, bail};
 use serde::Serialize;
 use tracery_core::Product;
 use tracery_core::export::{
-    SvgFlavour, SvgOptions, ThreeMfObject, encode_png, object_colour, render_product, write_3mf, write_stl, write_svg,
+    SvgFlavour, SvgOptions, ThreeMfObject, encode_png, object_colour, render_product, write_3mf, write_paths_svg,
+    write_stl, write_svg,
 };
 use tracery_core::print::{JumpRings, PrintSettings, Printability, RingAt};
 use tracery_core::product::Facts;
@@ -234,7 +235,14 @@ pub fn write_outputs(
     };
     let svg_options = args.svg_options()?;
     // A cut SVG unites and offsets the region: only when it is asked for.
-    let svg = args.svg.as_ref().map(|_| write_svg(&product.region_mm, &svg_options));
+    // Stroked paths (a fill) are drawn as strokes for a pen, unless cut
+    // outlines are asked for.
+    let svg = args.svg.as_ref().map(|_| match svg_options.flavour {
+        SvgFlavour::Engrave if !product.paths_mm.is_empty() && svg_options.kerf_mm == 0.0 => {
+            write_paths_svg(&product.paths_mm)
+        }
+        _ => write_svg(&product.region_mm, &svg_options),
+    });
     let report = Report {
         mode,
         exemplar: exemplar.to_string(),

@@ -72,3 +72,67 @@ pub fn first_path_points(data: &[u8]) -> Result<Vec<DVec2>, CurveError> {
     let scale = if has_physical_size(data) { MM_PER_PX } else { 1.0 };
     Ok(points.into_iter().map(|p| p * scale).collect())
 }
+
+/// One subpath of a drawing, in millimetres, `y` up.
+#[derive(Clone, Debug, PartialEq)]
+pub struct SvgShape {
+    /// The points (a closed subpath does not repeat its first).
+    pub points_mm: Vec<DVec2>,
+    /// Whether the subpath ended with a `Z`.
+    pub closed: bool,
+    /// Whether its path is filled.
+    pub filled: bool,
+    /// Whether its path is stroked.
+    pub stroked: bool,
+}
+
+/// Every subpath of every path of an SVG document, flattened so that no
+/// point of a curve is farther than `tolerance_mm` from its chords, in
+/// millimetres (sized as [`first_path_points`] sizes them), `y` up.
+///
+/// ```
+/// let svg = br#"<svg xmlns="http://www.w3.org/2000/svg" width="40mm" height="40mm" viewBox="0 0 40 40">
+///   <path d="M0,0 C10,10 20,10 30,0" stroke="black" fill="none"/>
+///   <circle cx="20" cy="20" r="5"/></svg>"#;
+/// let shapes = tracery_core::curve::svg_shapes(svg, 0.01).unwrap();
+/// assert_eq!(shapes.len(), 2);
+/// assert!(shapes[0].stroked && !shapes[0].filled && !shapes[0].closed);
+/// assert!(shapes[1].filled && shapes[1].closed);
+/// ```
+pub fn svg_shapes(data: &[u8], tolerance_mm: f64) -> Result<Vec<SvgShape>, CurveError> {
+    let tree = usvg::Tree::from_data(data, &usvg::Options::default()).map_err(|e| CurveError::NotSvg(e.to_string()))?;
+    let scale = if has_physical_size(data) { MM_PER_PX } else { 1.0 };
+    let tolerance = (tolerance_mm / scale).max(1e-9);
+    let mut shapes = Vec::new();
+    fn walk(group: &usvg::Group, tolerance: f64, scale: f64, shapes: &mut Vec<SvgShape>) {
+        for node in group.children() {
+            match node {
+                usvg::Node::Group(g) => walk(g, tolerance, scale, shapes),
+                usvg::Node::Path(path) => {
+                    for sub in flatten_subpaths(path.data(), path.abs_transform(), tolerance) {
+                        let mut points_mm: Vec<DVec2> = sub.points.iter().map(|p| *p * scale).collect();
+                        points_mm.dedup_by(|a, b| a.distance(*b) < 1e-9);
+                        if sub.closed
+                            && points_mm.len() > 2
+                            && points_mm[0].distance(points_mm[points_mm.len() - 1]) < 1e-9
+                        {
+                            points_mm.pop();
+                        }
+                        shapes.push(SvgShape {
+                            points_mm,
+                            closed: sub.closed,
+                            filled: path.fill().is_some(),
+                            stroked: path.stroke().is_some(),
+                        });
+                    }
+                }
+                _ => {}
+            }
+        }
+    }
+    walk(tree.root(), tolerance, scale, &mut shapes);
+    if shapes.iter().flat_map(|s| &s.points_mm).any(|p| !p.is_finite()) {
+        return Err(CurveError::NotFinite);
+    }
+    Ok(shapes)
+}

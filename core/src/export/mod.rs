@@ -8,7 +8,7 @@ mod threemf;
 
 pub use raster::{MAX_RENDER_PX, RenderError, encode_png, render_product, render_textured};
 pub use stl::write_stl;
-pub use svg::{CUT_COLOUR, HAIRLINE_MM, SvgFlavour, SvgOptions, region_to_svg, write_svg};
+pub use svg::{CUT_COLOUR, HAIRLINE_MM, SvgFlavour, SvgOptions, region_to_svg, write_paths_svg, write_svg};
 pub use threemf::{OBJECT_COLOURS, ThreeMfObject, object_colour, write_3mf};
 
 /// Why a file could not be written.

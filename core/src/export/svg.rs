@@ -162,3 +162,56 @@ fn ring_path(ring: &[DVec2], to_page: impl Fn(DVec2) -> DVec2) -> Option<String>
     }
     Some(format!("M{} Z", points.join(" L")))
 }
+
+/// Stroked paths as an SVG document for a pen plotter or a laser that
+/// engraves lines: each path a black stroke of its own width with round
+/// caps and joins, sized in millimetres as [`write_svg`] sizes regions.
+///
+/// ```
+/// use tracery_core::DVec2;
+/// use tracery_core::export::write_paths_svg;
+/// use tracery_core::product::StrokedPath;
+/// let line = StrokedPath { points_mm: vec![DVec2::ZERO, DVec2::new(10.0, 5.0)], closed: false, width_mm: 0.8 };
+/// let svg = write_paths_svg(&[line]);
+/// assert_eq!(svg.matches("<path").count(), 1);
+/// assert!(svg.contains(r#"stroke-width="0.800""#) && svg.contains(r#"fill="none""#));
+/// ```
+pub fn write_paths_svg(paths: &[crate::product::StrokedPath]) -> String {
+    let reach = paths.iter().map(|p| 0.5 * p.width_mm).fold(0.0, f64::max);
+    let bounds = Rect::from_points(paths.iter().flat_map(|p| p.points_mm.iter().copied()))
+        .unwrap_or(Rect::new(DVec2::ZERO, DVec2::ONE))
+        .inflate(MARGIN_MM + reach);
+    let (w, h) = (bounds.width(), bounds.height());
+    let to_page = |p: DVec2| DVec2::new(p.x - bounds.min.x, bounds.max.y - p.y);
+    let mut svg = String::new();
+    let _ = writeln!(
+        svg,
+        r#"<svg xmlns="http://www.w3.org/2000/svg" width="{w:.3}mm" height="{h:.3}mm" viewBox="0 0 {w:.3} {h:.3}">"#
+    );
+    let _ = writeln!(
+        svg,
+        r#"  <g id="strokes" fill="none" stroke="black" stroke-linecap="round" stroke-linejoin="round">"#
+    );
+    for path in paths {
+        let points: Vec<String> = path
+            .points_mm
+            .iter()
+            .map(|p| {
+                let q = to_page(*p);
+                format!("{:.DECIMALS$},{:.DECIMALS$}", q.x, q.y)
+            })
+            .collect();
+        if points.len() < 2 {
+            continue;
+        }
+        let close = if path.closed { " Z" } else { "" };
+        let _ = writeln!(
+            svg,
+            r#"    <path fill="none" stroke-width="{:.3}" d="M{}{close}"/>"#,
+            path.width_mm,
+            points.join(" L")
+        );
+    }
+    svg.push_str("  </g>\n</svg>\n");
+    svg
+}

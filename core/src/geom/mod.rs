@@ -3,6 +3,8 @@
 //! topology count, polyline refinement and SVG path flattening.
 
 mod boolean;
+mod bridges;
+mod clip;
 mod disc;
 mod fill;
 pub mod flatten;
@@ -20,6 +22,8 @@ mod touching;
 mod trace;
 
 pub use boolean::{FillRule, clip_to_rect, difference, intersection, resolve_contours, union};
+pub use bridges::join_parts;
+pub use clip::{clip_polylines, ring_crossing};
 pub use disc::{arc_step, disc};
 pub use fill::fill_triangles;
 pub use offset::{OFFSET_ARC_TOLERANCE_MM, offset};

@@ -9,22 +9,36 @@
 mod assignment;
 mod builtin;
 mod curve_path;
+mod error;
+mod exemplar;
+mod fragments;
 mod matching;
 mod neighbourhood;
+mod pipeline;
+mod reconstruct;
+mod region;
 mod sample_graph;
 mod search;
+mod settings;
 mod synthesis;
 
 pub use assignment::{MatchedPair, assign_edges, assign_positions, existence_votes};
 pub use builtin::{BUILTIN_CURVES, builtin_curves};
 pub use curve_path::CurvePath;
+pub use error::FillError;
+pub use exemplar::{CurveExemplar, EXEMPLAR_TOLERANCE_MM, MAX_EXEMPLAR_SAMPLES};
+pub use fragments::FragmentLimits;
 pub use matching::{Matching, robust_match};
 pub use neighbourhood::{
     EDGE_WEIGHT, NeighbourhoodPair, SampleGrid, Similarity, edge_difference, neighbourhood_distance, unmatched_cost,
 };
+pub use pipeline::make_product;
+pub use reconstruct::{CORNER_TURN, SMOOTH_TOLERANCE_MM, smooth_paths};
+pub use region::{MAX_FILL_SAMPLES, REGION_TOLERANCE_MM, check_region, parse_region, region_from_outlines};
 pub use sample_graph::{JOIN_TOLERANCE_MM, MAX_SEGMENTS, Sample, SampleError, SampleGraph, SampleKind};
 pub use search::{NearestField, Neighbourhoods, SearchSettings, search};
-pub use synthesis::{FillSettings, fill_rectangle};
+pub use settings::{InvalidSetting, MAX_ITERATIONS, MIN_DELTA_MM, Settings};
+pub use synthesis::{fill_rectangle, synthesize};
 
 /// Levels of the sample hierarchy, coarse to fine.
 pub const LEVELS: usize = 3;

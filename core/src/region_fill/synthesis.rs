@@ -6,33 +6,15 @@
 use glam::DVec2;
 use rayon::prelude::*;
 
+use crate::control::Control;
+use crate::geom::Rect;
 use crate::random::SplitMix64;
 
 use super::assignment::{MatchedPair, assign_edges, assign_positions, existence_votes, missing_samples};
 use super::{
-    CurvePath, LEVELS, NearestField, Neighbourhoods, SampleError, SampleGraph, SampleGrid, SearchSettings, Similarity,
-    neighbourhood_distance, search,
+    CurvePath, FillError, LEVELS, NearestField, Neighbourhoods, SampleGraph, SampleGrid, SearchSettings, Settings,
+    Similarity, neighbourhood_distance, search,
 };
-
-/// How a fill is synthesized.
-#[derive(Clone, Copy, Debug, PartialEq)]
-#[non_exhaustive]
-pub struct FillSettings {
-    /// Sample spacing at the finest level, mm; coarser levels double it.
-    pub delta_mm: f64,
-    /// Neighbourhood radius in spacings (not a whole number: see `docs/region-fill.md`).
-    pub radius_spacings: f64,
-    /// Search and assignment steps at each level.
-    pub iterations: usize,
-    /// Seed of the random choices.
-    pub seed: u64,
-}
-
-impl Default for FillSettings {
-    fn default() -> Self {
-        FillSettings { delta_mm: 1.5, radius_spacings: 3.1, iterations: 7, seed: 1 }
-    }
-}
 
 /// Patches (section 4.3.2): the rectangle `size_mm` is tiled with squares
 /// `patch_mm` wide, each filled with the samples (not the edges) of a
@@ -73,19 +55,35 @@ fn bounds(graph: &SampleGraph) -> (DVec2, DVec2) {
 /// texture like `exemplar`; returns the paths.
 ///
 /// ```no_run
-/// use tracery_core::region_fill::{FillSettings, builtin_curves, fill_rectangle};
-/// let paths = fill_rectangle(&builtin_curves("crackle").unwrap(), 60.0, 40.0, &FillSettings::default()).unwrap();
+/// use tracery_core::region_fill::{Settings, builtin_curves, fill_rectangle};
+/// let paths = fill_rectangle(&builtin_curves("crackle").unwrap(), 60.0, 40.0, &Settings::default()).unwrap();
 /// assert!(!paths.is_empty());
 /// ```
 pub fn fill_rectangle(
     exemplar: &[CurvePath],
     width_mm: f64,
     height_mm: f64,
-    settings: &FillSettings,
-) -> Result<Vec<CurvePath>, SampleError> {
-    let size = DVec2::new(width_mm, height_mm);
+    settings: &Settings,
+) -> Result<Vec<CurvePath>, FillError> {
+    let bounds = Rect::new(DVec2::ZERO, DVec2::new(width_mm, height_mm));
+    synthesize(exemplar, &bounds, settings, &Control::default())
+}
+
+/// Synthesizes a curve texture like `exemplar` over the rectangle `bounds`
+/// (sections 4.3.2 to 4.3.5): patches, then at each of three levels,
+/// coarse to fine, `settings.iterations` steps of search and assignment,
+/// the graph made into paths and sampled again between levels. Reports
+/// progress after every step and stops when asked to.
+pub fn synthesize(
+    exemplar: &[CurvePath],
+    bounds: &Rect,
+    settings: &Settings,
+    control: &Control,
+) -> Result<Vec<CurvePath>, FillError> {
+    let size = bounds.size();
     let mut rng = SplitMix64::new(settings.seed);
     let mut paths: Option<Vec<CurvePath>> = None;
+    let steps = (LEVELS * settings.iterations) as f32;
     for level in 0..LEVELS {
         let delta = settings.delta_mm * 2f64.powi((LEVELS - 1 - level) as i32);
         let radius = settings.radius_spacings * delta;
@@ -94,28 +92,56 @@ pub fn fill_rectangle(
             None => initialize(&input, size, 2.0 * radius, delta, &mut rng),
             Some(p) => SampleGraph::new(p, delta)?,
         };
-        let output = synthesize_level(&input, output, size, delta, radius, settings.iterations, &mut rng);
+        let at = Level {
+            size_mm: size,
+            delta_mm: delta,
+            radius_mm: radius,
+            iterations: settings.iterations,
+            control,
+            done: (level * settings.iterations) as f32,
+            steps,
+        };
+        let output = synthesize_level(&input, output, &at, &mut rng)?;
         paths = Some(output.to_paths());
     }
-    Ok(paths.unwrap_or_default())
+    let offset = bounds.min;
+    Ok(paths
+        .unwrap_or_default()
+        .into_iter()
+        .map(|p| CurvePath { points_mm: p.points_mm.iter().map(|q| *q + offset).collect(), ..p })
+        .collect())
+}
+
+/// One level of the synthesis: its area, spacing and radius, and its
+/// steps' place in the whole for progress.
+struct Level<'a, 'c> {
+    size_mm: DVec2,
+    delta_mm: f64,
+    radius_mm: f64,
+    iterations: usize,
+    control: &'a Control<'c>,
+    /// Steps done before this level.
+    done: f32,
+    /// Steps in the whole synthesis.
+    steps: f32,
 }
 
 /// Search and assignment steps at one level.
 fn synthesize_level(
     input: &SampleGraph,
     mut output: SampleGraph,
-    size_mm: DVec2,
-    delta_mm: f64,
-    radius_mm: f64,
-    iterations: usize,
+    level: &Level,
     rng: &mut SplitMix64,
-) -> SampleGraph {
+) -> Result<SampleGraph, FillError> {
+    let (size_mm, delta_mm, radius_mm) = (level.size_mm, level.delta_mm, level.radius_mm);
     let similarity = Similarity::new(delta_mm);
     let project = |p: DVec2| p.clamp(DVec2::ZERO, size_mm);
     // The exemplar's neighbourhoods are the same at every step of a level.
     let input_near = Neighbourhoods::new(input, radius_mm);
     let mut field: Option<NearestField> = None;
-    for step in 0..iterations {
+    for step in 0..level.iterations {
+        level.control.check()?;
+        level.control.report((level.done + step as f32) / level.steps);
         let mut search_settings = SearchSettings::new(radius_mm, delta_mm);
         search_settings.iterations = if step == 0 { 5 } else { 2 };
         search_settings.seed = rng.state() ^ step as u64;
@@ -152,5 +178,5 @@ fn synthesize_level(
         }
         field = Some(kept);
     }
-    output
+    Ok(output)
 }

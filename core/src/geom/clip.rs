@@ -1,0 +1,127 @@
+//! Open paths cut to a region (`i_overlay`'s string clipping), and the
+//! test for a ring that crosses itself.
+
+use glam::DVec2;
+use i_overlay::core::fill_rule::FillRule as OverlayFill;
+use i_overlay::float::clip::FloatClip;
+use i_overlay::string::clip::ClipRule;
+
+use super::Region;
+
+/// Points of a clipped path closer than this are one point, mm.
+const SAME_POINT_MM: f64 = 1e-9;
+
+/// The parts of the polylines `paths_mm` (each open, or closed when its
+/// flag says so) that lie inside `region`. A closed path wholly inside
+/// comes back closed; every other part comes back open. Parts on the
+/// region's boundary count as outside.
+///
+/// ```
+/// use tracery_core::DVec2;
+/// use tracery_core::geom::{Polygon, Region, clip_polylines};
+/// let square = Region::new(vec![Polygon {
+///     outer: vec![DVec2::ZERO, DVec2::new(2.0, 0.0), DVec2::new(2.0, 2.0), DVec2::new(0.0, 2.0)],
+///     holes: vec![],
+/// }]);
+/// let across = vec![DVec2::new(-1.0, 1.0), DVec2::new(3.0, 1.0)];
+/// let parts = clip_polylines(&[(across, false)], &square);
+/// assert_eq!(parts.len(), 1);
+/// assert!((parts[0].0[0].x.min(parts[0].0[1].x) - 0.0).abs() < 1e-9);
+/// ```
+pub fn clip_polylines(paths_mm: &[(Vec<DVec2>, bool)], region: &Region) -> Vec<(Vec<DVec2>, bool)> {
+    let shape: Vec<Vec<[f64; 2]>> = region.rings().map(|r| r.iter().map(|p| [p.x, p.y]).collect()).collect();
+    if shape.is_empty() {
+        return Vec::new();
+    }
+    let rule = ClipRule { invert: false, boundary_included: false };
+    let mut out = Vec::new();
+    for (points, closed) in paths_mm {
+        if points.len() < 2 {
+            continue;
+        }
+        if *closed && points.iter().all(|p| region.contains(*p)) && !crosses_boundary(points, region) {
+            out.push((points.clone(), true));
+            continue;
+        }
+        let mut string: Vec<[f64; 2]> = points.iter().map(|p| [p.x, p.y]).collect();
+        if *closed {
+            string.push(string[0]);
+        }
+        for part in string.clip_by_as::<i64>(&shape, OverlayFill::EvenOdd, rule) {
+            let mut part: Vec<DVec2> = part.into_iter().map(|[x, y]| DVec2::new(x, y)).collect();
+            part.dedup_by(|a, b| a.distance(*b) < SAME_POINT_MM);
+            if part.len() >= 2 {
+                out.push((part, false));
+            }
+        }
+    }
+    out
+}
+
+/// Whether a segment of the loop `points` crosses a ring of `region`.
+fn crosses_boundary(points: &[DVec2], region: &Region) -> bool {
+    let edges = |ring: &[DVec2]| -> Vec<[DVec2; 2]> {
+        (0..ring.len()).map(|i| [ring[i], ring[(i + 1) % ring.len()]]).collect()
+    };
+    let path = edges(points);
+    region.rings().any(|ring| edges(ring).iter().any(|a| path.iter().any(|b| segments_cross(*a, *b))))
+}
+
+/// Whether two segments share a point (touching counts).
+fn segments_cross([a, b]: [DVec2; 2], [c, d]: [DVec2; 2]) -> bool {
+    let side = |p: DVec2, q: DVec2, r: DVec2| (q - p).perp_dot(r - p);
+    let (d1, d2) = (side(c, d, a), side(c, d, b));
+    let (d3, d4) = (side(a, b, c), side(a, b, d));
+    if ((d1 > 0.0 && d2 < 0.0) || (d1 < 0.0 && d2 > 0.0)) && ((d3 > 0.0 && d4 < 0.0) || (d3 < 0.0 && d4 > 0.0)) {
+        return true;
+    }
+    let on = |p: DVec2, q: DVec2, r: DVec2, s: f64| {
+        s == 0.0 && r.x >= p.x.min(q.x) && r.x <= p.x.max(q.x) && r.y >= p.y.min(q.y) && r.y <= p.y.max(q.y)
+    };
+    on(c, d, a, d1) || on(c, d, b, d2) || on(a, b, c, d3) || on(a, b, d, d4)
+}
+
+/// A point where the closed ring `ring` crosses or touches itself (two
+/// edges that are not neighbours share a point), or `None` for a simple
+/// ring. Edges are swept in order of their left ends, so only edges whose
+/// spans overlap in `x` are compared.
+///
+/// ```
+/// use tracery_core::DVec2;
+/// use tracery_core::geom::ring_crossing;
+/// let square = [DVec2::ZERO, DVec2::X, DVec2::ONE, DVec2::Y];
+/// assert!(ring_crossing(&square).is_none());
+/// let bow_tie = [DVec2::ZERO, DVec2::X, DVec2::Y, DVec2::ONE];
+/// assert!((ring_crossing(&bow_tie).unwrap() - DVec2::splat(0.5)).length() < 1e-9);
+/// ```
+pub fn ring_crossing(ring: &[DVec2]) -> Option<DVec2> {
+    let n = ring.len();
+    if n < 4 {
+        return None;
+    }
+    let edge = |i: usize| [ring[i], ring[(i + 1) % n]];
+    let mut order: Vec<usize> = (0..n).collect();
+    order.sort_by(|&a, &b| {
+        let [p, q] = edge(a);
+        let [r, s] = edge(b);
+        p.x.min(q.x).total_cmp(&r.x.min(s.x))
+    });
+    for (k, &i) in order.iter().enumerate() {
+        let [a, b] = edge(i);
+        let right = a.x.max(b.x);
+        for &j in &order[k + 1..] {
+            let [c, d] = edge(j);
+            if c.x.min(d.x) > right {
+                break;
+            }
+            let neighbours = (i + 1) % n == j || (j + 1) % n == i;
+            if !neighbours && segments_cross([a, b], [c, d]) {
+                // Where they meet: the lines' intersection, or a shared end.
+                let denominator = (b - a).perp_dot(d - c);
+                let t = if denominator.abs() > 0.0 { (c - a).perp_dot(d - c) / denominator } else { 0.0 };
+                return Some(a + (b - a) * t.clamp(0.0, 1.0));
+            }
+        }
+    }
+    None
+}

@@ -1,0 +1,139 @@
+//! [`make_product`]: a region filled with a curve texture, as stroked paths
+//! (for pens and lasers) and as a printable solid (the strokes drawn with a
+//! round pen, clipped to the region, united with an optional frame).
+
+use crate::control::Control;
+use crate::geom::{
+    Region, brush_stroke, clip_polylines, count_topology, difference, fill_triangles, intersection, join_parts, offset,
+    union,
+};
+use crate::mesh::extrude;
+use crate::product::{Fact, Facts, Product, StrokedPath};
+use crate::report::Timings;
+
+use glam::DVec2;
+
+use super::{
+    CurveExemplar, CurvePath, FillError, FragmentLimits, SampleGraph, Settings, check_region, smooth_paths, synthesize,
+};
+
+/// Paths left shorter than this many sample spacings by clipping are
+/// dropped: stubs where a curve grazes the region's edge, too short to read
+/// as part of the pattern.
+const MIN_CLIPPED_SPACINGS: f64 = 1.0;
+
+/// Spurs and loose bits shorter than this many spacings go when the
+/// exemplar has none to learn a length from.
+const FRAGMENT_FALLBACK_SPACINGS: f64 = 4.0;
+
+/// Fills `region` (mm) with a curve texture like `exemplar`.
+///
+/// ```no_run
+/// use tracery_core::control::Control;
+/// use tracery_core::region_fill::{CurveExemplar, Settings, make_product, parse_region};
+/// let exemplar = CurveExemplar::builtin("waves").unwrap();
+/// let region = parse_region("circle:25").unwrap();
+/// let product = make_product(&exemplar, &region, &Settings::default(), &Control::default()).unwrap();
+/// assert!(!product.paths_mm.is_empty() && product.mesh_mm.is_some());
+/// ```
+pub fn make_product(
+    exemplar: &CurveExemplar,
+    region: &Region,
+    settings: &Settings,
+    control: &Control,
+) -> Result<Product, FillError> {
+    settings.validate()?;
+    exemplar.validate(settings.delta_mm)?;
+    check_region(region, settings)?;
+    let bounds = region.bounds().ok_or(FillError::EmptyRegion)?;
+    let mut timings = Timings::default();
+    let synthesized = timings.time("synthesis", || synthesize(&exemplar.paths, &bounds, settings, control))?;
+    control.check()?;
+    let smooth = timings.time("reconstruction", || {
+        let radius = settings.radius_mm();
+        let learned = SampleGraph::new(&exemplar.paths, settings.delta_mm).map(|g| g.to_paths());
+        let limits = FragmentLimits::learn(&learned?, radius, FRAGMENT_FALLBACK_SPACINGS * settings.delta_mm);
+        let inner = bounds.inflate(-radius);
+        let anchored = |p: DVec2| !(p.cmpgt(inner.min).all() && p.cmplt(inner.max).all());
+        Ok::<_, FillError>(smooth_paths(&limits.remove_from(synthesized, anchored)))
+    })?;
+    let paths = timings.time("clip", || clip_paths(&smooth, region, MIN_CLIPPED_SPACINGS * settings.delta_mm));
+    let (print, bridges) = timings.time("strokes", || print_region(&paths, region, settings));
+    control.check()?;
+    let topology = count_topology(&print);
+    let mesh = timings.time("mesh", || extrude(&print, settings.thickness_mm))?;
+    let mut facts = Facts::default();
+    facts.push("paths", Fact::Count(paths.len()));
+    facts.push("length_mm", Fact::Number(paths.iter().map(CurvePath::length_mm).sum()));
+    facts.push("region_area_mm2", Fact::Number(region.area()));
+    facts.push("coverage", Fact::Number(print.area() / region.area()));
+    if settings.one_piece {
+        facts.push("bridges", Fact::Count(bridges));
+        facts.push("one_piece", Fact::Text(if topology.components == 1 { "joined" } else { "not joined" }.into()));
+    }
+    let mut product = Product {
+        fill_mm: fill_triangles(&print),
+        paths_mm: stroked_paths(paths, region, settings),
+        mesh_mm: Some(mesh),
+        topology: crate::geom::PatternTopology {
+            components: topology.components,
+            holes: topology.holes,
+            ..Default::default()
+        },
+        timings,
+        facts,
+        ..Product::default()
+    };
+    product.region_mm = print;
+    Ok(product)
+}
+
+/// The parts of `paths` inside `region`, less stubs shorter than `min_mm`.
+fn clip_paths(paths: &[CurvePath], region: &Region, min_mm: f64) -> Vec<CurvePath> {
+    let polylines: Vec<_> = paths.iter().map(|p| (p.points_mm.clone(), p.closed)).collect();
+    clip_polylines(&polylines, region)
+        .into_iter()
+        .map(|(points_mm, closed)| CurvePath { points_mm, closed })
+        .filter(|p| p.length_mm() >= min_mm)
+        .collect()
+}
+
+/// What prints: every path drawn with a round pen, cut to the region,
+/// united with a frame along the region's edge; with `one_piece`, joined
+/// by bridges. Also the number of bridges.
+fn print_region(paths: &[CurvePath], region: &Region, settings: &Settings) -> (Region, usize) {
+    let strokes: Vec<Region> =
+        paths.iter().map(|p| brush_stroke(&p.points_mm, settings.stroke_width_mm, p.closed)).collect();
+    let mut all: Vec<&Region> = strokes.iter().collect();
+    let frame = if settings.frame_mm > 0.0 {
+        difference(region, &offset(region, -settings.frame_mm))
+    } else {
+        Region::default()
+    };
+    all.push(&frame);
+    let print = intersection(&union(&all), region);
+    if settings.one_piece {
+        let (joined, bridges) = join_parts(&print, settings.stroke_width_mm);
+        (joined, bridges.len())
+    } else {
+        (print, 0)
+    }
+}
+
+/// The paths as a pen draws them, and the frame as closed paths along its
+/// middle, as wide as the frame.
+fn stroked_paths(paths: Vec<CurvePath>, region: &Region, settings: &Settings) -> Vec<StrokedPath> {
+    let mut stroked: Vec<StrokedPath> = paths
+        .into_iter()
+        .map(|p| StrokedPath { points_mm: p.points_mm, closed: p.closed, width_mm: settings.stroke_width_mm })
+        .collect();
+    if settings.frame_mm > 0.0 {
+        let middle = offset(region, -0.5 * settings.frame_mm);
+        stroked.extend(middle.rings().map(|ring| StrokedPath {
+            points_mm: ring.clone(),
+            closed: true,
+            width_mm: settings.frame_mm,
+        }));
+    }
+    stroked
+}

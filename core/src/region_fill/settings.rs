@@ -1,0 +1,111 @@
+//! [`Settings`]: everything a person chooses for region fill, declared once
+//! for the document, the command line and the app.
+
+use serde::{Deserialize, Serialize};
+
+/// Region fill's settings, with the one set of defaults
+/// (`docs/region-fill.md` explains them).
+///
+/// ```
+/// use tracery_core::region_fill::Settings;
+/// let mut settings = Settings::default();
+/// assert!(settings.validate().is_ok());
+/// settings.stroke_width_mm = -1.0;
+/// assert!(settings.validate().is_err());
+/// ```
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(default)]
+#[non_exhaustive]
+pub struct Settings {
+    /// Sample spacing at the finest level (the paper's δ), mm; the two
+    /// coarser levels double it twice.
+    pub delta_mm: f64,
+    /// Neighbourhood radius in spacings (the paper's r / δ). Not a whole
+    /// number, so that samples evenly spaced along a path do not sit right
+    /// on the rim, in one neighbourhood and out of its twin by a rounding.
+    pub radius_spacings: f64,
+    /// Search and assignment steps at each level.
+    pub iterations: usize,
+    /// Which random choices the synthesis makes: another seed, another fill.
+    pub seed: u64,
+    /// Width of the pen the paths are drawn with, mm: the strokes' width in
+    /// the SVG and in the printed solid.
+    pub stroke_width_mm: f64,
+    /// Width of a frame along the region's edge, inside it, mm; 0 for none.
+    pub frame_mm: f64,
+    /// Thickness of the printed solid, mm.
+    pub thickness_mm: f64,
+    /// Join every piece of the print to the rest with short bridges, so it
+    /// prints as one object.
+    pub one_piece: bool,
+}
+
+impl Default for Settings {
+    fn default() -> Self {
+        Settings {
+            delta_mm: 1.5,
+            radius_spacings: 3.1,
+            iterations: 7,
+            seed: 1,
+            stroke_width_mm: 0.8,
+            frame_mm: 0.0,
+            thickness_mm: 1.5,
+            one_piece: false,
+        }
+    }
+}
+
+/// A setting out of range, in words a person understands.
+#[derive(Clone, Debug, PartialEq, thiserror::Error)]
+#[error("{0}")]
+pub struct InvalidSetting(pub String);
+
+/// The finest sample spacing allowed, mm: finer would only multiply the
+/// samples of a pattern no printer or pen could show.
+pub const MIN_DELTA_MM: f64 = 0.2;
+
+/// The most steps at one level: the paper's 7 settle a fill; far more only waste time.
+pub const MAX_ITERATIONS: usize = 50;
+
+impl Settings {
+    /// Checks every number is in range.
+    pub fn validate(&self) -> Result<(), InvalidSetting> {
+        let positive = |what: &str, x: f64| {
+            if x.is_finite() && x > 0.0 {
+                Ok(())
+            } else {
+                Err(InvalidSetting(format!("{what} must be a positive number of millimetres, not {x}")))
+            }
+        };
+        positive("the sample spacing", self.delta_mm)?;
+        positive("the stroke width", self.stroke_width_mm)?;
+        positive("the thickness", self.thickness_mm)?;
+        if self.delta_mm < MIN_DELTA_MM {
+            return Err(InvalidSetting(format!(
+                "the sample spacing must be at least {MIN_DELTA_MM} mm, not {}",
+                self.delta_mm
+            )));
+        }
+        if !(self.frame_mm.is_finite() && self.frame_mm >= 0.0) {
+            return Err(InvalidSetting(format!("the frame must be 0 (none) or a width in mm, not {}", self.frame_mm)));
+        }
+        if !(self.radius_spacings.is_finite() && (1.5..=8.0).contains(&self.radius_spacings)) {
+            return Err(InvalidSetting(format!(
+                "the neighbourhood radius must be between 1.5 and 8 spacings, not {}",
+                self.radius_spacings
+            )));
+        }
+        if !(1..=MAX_ITERATIONS).contains(&self.iterations) {
+            return Err(InvalidSetting(format!(
+                "the steps per level must be between 1 and {MAX_ITERATIONS}, not {}",
+                self.iterations
+            )));
+        }
+        Ok(())
+    }
+
+    /// The neighbourhood radius at the finest level, mm.
+    pub fn radius_mm(&self) -> f64 {
+        self.radius_spacings * self.delta_mm
+    }
+}
