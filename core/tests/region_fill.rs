@@ -276,12 +276,13 @@ fn a_crackle_fill_stays_in_its_rectangle_and_keeps_the_exemplars_junctions() {
 
 #[test]
 fn a_bounded_comparison_gives_up_only_when_the_full_one_is_no_cheaper() {
-    use tracery_core::region_fill::{NeighbourhoodPair, SampleGrid, Similarity, neighbourhood_distance};
+    use tracery_core::region_fill::{NeighbourhoodPair, SampleGrid, Similarity, edge_vectors, neighbourhood_distance};
     let (delta_mm, radius_mm) = (1.5, 4.7);
     let similarity = Similarity::new(delta_mm);
     let crackle = SampleGraph::new(&builtin_curves("crackle").unwrap(), delta_mm).unwrap();
     let vine = SampleGraph::new(&builtin_curves("vine").unwrap(), delta_mm).unwrap();
     let (cg, vg) = (SampleGrid::new(&crackle, radius_mm), SampleGrid::new(&vine, radius_mm));
+    let (crackle_edges, vine_edges) = (edge_vectors(&crackle), edge_vectors(&vine));
     let (mut pruned, mut kept) = (0, 0);
     for o in (0..crackle.samples.len()).step_by(17) {
         let members_o = cg.within(&crackle, crackle.samples[o].position_mm, radius_mm);
@@ -290,9 +291,11 @@ fn a_bounded_comparison_gives_up_only_when_the_full_one_is_no_cheaper() {
             let full = neighbourhood_distance(&crackle, o, &members_o, &vine, i, &members_i, &similarity);
             let pair = NeighbourhoodPair {
                 output: &crackle,
+                output_edges: &crackle_edges,
                 s_o: o,
                 members_o: &members_o,
                 input: &vine,
+                input_edges: &vine_edges,
                 s_i: i,
                 members_i: &members_i,
             };

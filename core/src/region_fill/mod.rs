@@ -30,7 +30,8 @@ pub use exemplar::{CurveExemplar, EXEMPLAR_TOLERANCE_MM, MAX_EXEMPLAR_SAMPLES};
 pub use fragments::FragmentLimits;
 pub use matching::{Matching, robust_match};
 pub use neighbourhood::{
-    EDGE_WEIGHT, NeighbourhoodPair, SampleGrid, Similarity, edge_difference, neighbourhood_distance, unmatched_cost,
+    EDGE_WEIGHT, EdgeVectors, NeighbourhoodPair, SampleGrid, Similarity, edge_difference, edge_vectors,
+    neighbourhood_distance, unmatched_cost,
 };
 pub use pipeline::make_product;
 pub use reconstruct::{CORNER_TURN, SMOOTH_TOLERANCE_MM, smooth_paths};

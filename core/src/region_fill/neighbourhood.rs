@@ -62,10 +62,19 @@ fn cell_of(p: DVec2, cell_mm: f64) -> (i64, i64) {
 /// exhaustive matching for Kuhn–Munkres.
 const EXHAUSTIVE_EDGES: usize = 4;
 
+/// A sample's edges as vectors to its neighbours, mm.
+pub type EdgeVectors = SmallVec<[DVec2; 4]>;
+
 /// The edges of sample `s` as vectors to its neighbours, mm.
-fn edge_vectors(graph: &SampleGraph, s: usize) -> SmallVec<[DVec2; 6]> {
+fn sample_edges(graph: &SampleGraph, s: usize) -> EdgeVectors {
     let p = graph.samples[s].position_mm;
     graph.neighbours[s].iter().map(|&n| graph.samples[n as usize].position_mm - p).collect()
+}
+
+/// Every sample's edges as vectors to its neighbours, mm: found once per
+/// graph and step, since the search compares each sample's edges many times.
+pub fn edge_vectors(graph: &SampleGraph) -> Vec<EdgeVectors> {
+    (0..graph.samples.len()).map(|s| sample_edges(graph, s)).collect()
 }
 
 /// The least sum of `|rows[r] − columns[c]|` over one-to-one matchings of
@@ -107,10 +116,14 @@ fn least_matching_sum(rows: &[DVec2], columns: &[DVec2], used: &mut [bool; 8]) -
 /// assert!((edge_difference(&line, 2, &line, 0, 1.0) - 1.0).abs() < 1e-9);
 /// ```
 pub fn edge_difference(graph_a: &SampleGraph, a: usize, graph_b: &SampleGraph, b: usize, beta_mm: f64) -> f64 {
-    if graph_a.neighbours[a].is_empty() {
+    edges_difference(&sample_edges(graph_a, a), &sample_edges(graph_b, b), beta_mm)
+}
+
+/// [`edge_difference`] of two samples' edge vectors.
+fn edges_difference(ea: &[DVec2], eb: &[DVec2], beta_mm: f64) -> f64 {
+    if ea.is_empty() {
         return 0.0;
     }
-    let (ea, eb) = (edge_vectors(graph_a, a), edge_vectors(graph_b, b));
     let (rows, columns) = if ea.len() <= eb.len() { (&ea, &eb) } else { (&eb, &ea) };
     let extra = beta_mm * (columns.len() - rows.len()) as f64;
     if rows.is_empty() {
@@ -162,7 +175,17 @@ pub fn neighbourhood_distance(
     members_i: &[u32],
     similarity: &Similarity,
 ) -> Matching {
-    let pair = NeighbourhoodPair { output, s_o, members_o, input, s_i, members_i };
+    let (output_edges, input_edges) = (edge_vectors(output), edge_vectors(input));
+    let pair = NeighbourhoodPair {
+        output,
+        output_edges: &output_edges,
+        s_o,
+        members_o,
+        input,
+        input_edges: &input_edges,
+        s_i,
+        members_i,
+    };
     pair.distance_below(similarity, f64::INFINITY).unwrap_or(Matching { input_of: Vec::new(), cost: f64::INFINITY })
 }
 
@@ -172,12 +195,16 @@ pub fn neighbourhood_distance(
 pub struct NeighbourhoodPair<'a> {
     /// The output graph.
     pub output: &'a SampleGraph,
+    /// Its samples' edges ([`edge_vectors`]).
+    pub output_edges: &'a [EdgeVectors],
     /// The output neighbourhood's centre.
     pub s_o: usize,
     /// The output neighbourhood's samples.
     pub members_o: &'a [u32],
     /// The input graph.
     pub input: &'a SampleGraph,
+    /// Its samples' edges ([`edge_vectors`]).
+    pub input_edges: &'a [EdgeVectors],
     /// The input neighbourhood's centre.
     pub s_i: usize,
     /// The input neighbourhood's samples.
@@ -222,7 +249,12 @@ impl NeighbourhoodPair<'_> {
                 // never better than that (there is an unmatched place for
                 // every row), so it is forbidden without comparing its edges.
                 if *c < unmatched[o] {
-                    *c += EDGE_WEIGHT * edge_difference(output, so as usize, input, si as usize, similarity.delta_mm);
+                    *c += EDGE_WEIGHT
+                        * edges_difference(
+                            &self.output_edges[so as usize],
+                            &self.input_edges[si as usize],
+                            similarity.delta_mm,
+                        );
                 }
                 if *c >= unmatched[o] {
                     *c = f64::INFINITY;
@@ -234,6 +266,12 @@ impl NeighbourhoodPair<'_> {
         if lower >= bound {
             return None;
         }
-        Some(robust_match(n, m, &|o, i| costs[o * m + i], &unmatched))
+        // Inputs no output sample may match are left out of the assignment.
+        let useful: SmallVec<[usize; 64]> = (0..m).filter(|&i| (0..n).any(|o| costs[o * m + i].is_finite())).collect();
+        let matching = robust_match(n, useful.len(), &|o, k| costs[o * m + useful[k]], &unmatched);
+        Some(Matching {
+            input_of: matching.input_of.into_iter().map(|k| k.map(|k| useful[k])).collect(),
+            cost: matching.cost,
+        })
     }
 }

@@ -4,8 +4,13 @@
 
 use glam::DVec2;
 
-use super::{NeighbourhoodPair, SampleGraph, SampleGrid, Similarity};
-use crate::random::SplitMix64;
+use super::{EdgeVectors, NeighbourhoodPair, SampleGraph, SampleGrid, Similarity, edge_vectors};
+use rayon::prelude::*;
+
+use crate::random::{SplitMix64, mix};
+
+/// Stretches of the visiting order searched at once (see [`search`]).
+const SEARCH_STRETCHES: usize = 4;
 
 /// How the search runs.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -77,6 +82,8 @@ pub struct Neighbourhoods {
     pub grid: SampleGrid,
     /// Each sample's neighbourhood: the samples within the radius, nearest first.
     pub members: Vec<Vec<u32>>,
+    /// Each sample's edges as vectors ([`edge_vectors`]).
+    pub edges: Vec<EdgeVectors>,
 }
 
 impl Neighbourhoods {
@@ -84,7 +91,7 @@ impl Neighbourhoods {
     pub fn new(graph: &SampleGraph, radius_mm: f64) -> Neighbourhoods {
         let grid = SampleGrid::new(graph, radius_mm);
         let members = graph.samples.iter().map(|s| grid.within(graph, s.position_mm, radius_mm)).collect();
-        Neighbourhoods { grid, members }
+        Neighbourhoods { grid, members, edges: edge_vectors(graph) }
     }
 }
 
@@ -128,6 +135,8 @@ pub fn search(
         let i = i as usize;
         let pair = NeighbourhoodPair {
             output,
+            output_edges: &output_near.edges,
+            input_edges: &input_near.edges,
             s_o: o,
             members_o: &output_near.members[o],
             input,
@@ -140,50 +149,75 @@ pub fn search(
     let mut field = match start {
         // The previous step's matches, scored again: the samples have moved since.
         Some(f) if f.input_of.len() == n_out => {
-            let cost = f.input_of.iter().enumerate().map(|(o, &i)| cost_of(o, i)).collect();
+            let cost = f.input_of.par_iter().enumerate().map(|(o, &i)| cost_of(o, i)).collect();
             NearestField { input_of: f.input_of.clone(), cost }
         }
         _ => {
             let input_of: Vec<u32> = (0..n_out).map(|_| stream.below(input.samples.len() as u64) as u32).collect();
-            let cost = input_of.iter().enumerate().map(|(o, &i)| cost_of(o, i)).collect();
+            let cost = input_of.par_iter().enumerate().map(|(o, &i)| cost_of(o, i)).collect();
             NearestField { input_of, cost }
         }
     };
+    // Propagation, then random search, for output sample `o`.
+    let visit_sample = |o: usize, field: &mut NearestField, stream: &mut SplitMix64| {
+        let here = output.samples[o].position_mm;
+        let try_candidate = |field: &mut NearestField, i: u32| {
+            if i == field.input_of[o] {
+                return;
+            }
+            let c = cost_below(o, i, field.cost[o]);
+            if c < field.cost[o] {
+                field.input_of[o] = i;
+                field.cost[o] = c;
+            }
+        };
+        // Propagation: where a neighbour's match says this sample's should be.
+        for &n in &nearest[o] {
+            let matched = input.samples[field.input_of[n as usize] as usize].position_mm;
+            let guess = matched + (here - output.samples[n as usize].position_mm);
+            if let Some(i) = nearest_input(guess, settings.delta_mm) {
+                try_candidate(field, i);
+            }
+        }
+        // Random search round the current match, in shrinking windows.
+        let mut window = settings.max_window_share * input_size_mm;
+        while window >= settings.min_window_share * input_size_mm {
+            let around = input.samples[field.input_of[o] as usize].position_mm;
+            let signed = |s: &mut SplitMix64| 2.0 * s.next_unit() - 1.0;
+            let guess = around + DVec2::new(signed(stream), signed(stream)) * window;
+            if let Some(i) = nearest_input(guess, window) {
+                try_candidate(field, i);
+            }
+            window *= 0.5;
+        }
+    };
     for pass in 0..settings.iterations {
-        let visit: Box<dyn Iterator<Item = &u32>> =
-            if pass % 2 == 0 { Box::new(order.iter()) } else { Box::new(order.iter().rev()) };
-        for &o in visit {
-            let o = o as usize;
-            let here = output.samples[o].position_mm;
-            let try_candidate = |field: &mut NearestField, i: u32| {
-                if i == field.input_of[o] {
-                    return;
+        // The visiting order in stretches, each searched by its own thread
+        // against the field as the pass found it (and its own updates):
+        // stretches of a breadth-first order are patches of the output, so
+        // matches still propagate within each. A fixed number of stretches
+        // keeps the result the same on any number of cores.
+        let mut visit: Vec<u32> = order.clone();
+        if pass % 2 == 1 {
+            visit.reverse();
+        }
+        let stretch = visit.len().div_ceil(SEARCH_STRETCHES).max(1);
+        let snapshot = &field;
+        let updates: Vec<Vec<(usize, u32, f64)>> = visit
+            .par_chunks(stretch)
+            .enumerate()
+            .map(|(k, chunk)| {
+                let mut local = snapshot.clone();
+                let mut stream = SplitMix64::new(mix(settings.seed ^ mix(((pass as u64) << 32) | k as u64)));
+                for &o in chunk {
+                    visit_sample(o as usize, &mut local, &mut stream);
                 }
-                let c = cost_below(o, i, field.cost[o]);
-                if c < field.cost[o] {
-                    field.input_of[o] = i;
-                    field.cost[o] = c;
-                }
-            };
-            // Propagation: where a neighbour's match says this sample's should be.
-            for &n in &nearest[o] {
-                let matched = input.samples[field.input_of[n as usize] as usize].position_mm;
-                let guess = matched + (here - output.samples[n as usize].position_mm);
-                if let Some(i) = nearest_input(guess, settings.delta_mm) {
-                    try_candidate(&mut field, i);
-                }
-            }
-            // Random search round the current match, in shrinking windows.
-            let mut window = settings.max_window_share * input_size_mm;
-            while window >= settings.min_window_share * input_size_mm {
-                let around = input.samples[field.input_of[o] as usize].position_mm;
-                let signed = |s: &mut SplitMix64| 2.0 * s.next_unit() - 1.0;
-                let guess = around + DVec2::new(signed(&mut stream), signed(&mut stream)) * window;
-                if let Some(i) = nearest_input(guess, window) {
-                    try_candidate(&mut field, i);
-                }
-                window *= 0.5;
-            }
+                chunk.iter().map(|&o| (o as usize, local.input_of[o as usize], local.cost[o as usize])).collect()
+            })
+            .collect();
+        for (o, i, c) in updates.into_iter().flatten() {
+            field.input_of[o] = i;
+            field.cost[o] = c;
         }
     }
     field

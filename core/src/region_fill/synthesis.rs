@@ -12,8 +12,8 @@ use crate::random::SplitMix64;
 
 use super::assignment::{MatchedPair, assign_edges, assign_positions, existence_votes, missing_samples};
 use super::{
-    CurvePath, FillError, LEVELS, NearestField, Neighbourhoods, SampleGraph, SampleGrid, SearchSettings, Settings,
-    Similarity, neighbourhood_distance, search,
+    CurvePath, FillError, LEVELS, NearestField, NeighbourhoodPair, Neighbourhoods, SampleGraph, SampleGrid,
+    SearchSettings, Settings, Similarity, search,
 };
 
 /// Patches (section 4.3.2): the rectangle `size_mm` is tiled with squares
@@ -155,8 +155,17 @@ fn synthesize_level(
                 let members_o = output_near.members[o].clone();
                 let centre_i = found.input_of[o];
                 let members_i = input_near.members[centre_i as usize].clone();
-                let matching =
-                    neighbourhood_distance(&output, o, &members_o, input, centre_i as usize, &members_i, &similarity);
+                let pair = NeighbourhoodPair {
+                    output: &output,
+                    output_edges: &output_near.edges,
+                    s_o: o,
+                    members_o: &members_o,
+                    input,
+                    input_edges: &input_near.edges,
+                    s_i: centre_i as usize,
+                    members_i: &members_i,
+                };
+                let matching = pair.distance_below(&similarity, f64::INFINITY).expect("no bound to exceed");
                 MatchedPair { centre_o: o as u32, members_o, centre_i, members_i, matching }
             })
             .collect();

@@ -3,6 +3,13 @@
 //! curve. The solver never optimizes these directly; tests and the corpus
 //! sweep use them to check it.
 
+mod curves;
+
+pub use curves::{
+    BEND_STEP_MM, CURVATURE_BIN, CURVATURE_BINS, CurveStatistics, MEET_TOLERANCE_MM, ORIENTATION_BINS, coverage,
+    curve_statistics, curve_statistics_within, histogram_distance,
+};
+
 use glam::DVec2;
 
 use crate::curve::Curve;

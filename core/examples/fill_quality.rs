@@ -1,0 +1,67 @@
+//! The quality and speed of region fill for every built-in curve exemplar,
+//! measured from the output alone (`tracery_core::quality`, which the
+//! synthesis never reads) against the exemplar measured the same way.
+//! Prints the Markdown tables in `docs/quality.md` and `docs/performance.md`.
+//!
+//! `cargo run -p tracery-core --release --example fill_quality [-- SEEDS]` (default 3 seeds).
+
+use tracery_core::control::Control;
+use tracery_core::geom::{Rect, Region};
+use tracery_core::quality::{CurveStatistics, coverage, curve_statistics_within, histogram_distance};
+use tracery_core::region_fill::{BUILTIN_CURVES, CurveExemplar, Settings, make_product, parse_region};
+
+fn polylines(paths: impl Iterator<Item = (Vec<tracery_core::DVec2>, bool)>) -> Vec<(Vec<tracery_core::DVec2>, bool)> {
+    paths.collect()
+}
+
+fn main() {
+    let seeds: u64 = std::env::args().nth(1).and_then(|s| s.parse().ok()).unwrap_or(3);
+    let settings = Settings::default();
+    let margin = settings.radius_mm();
+    let region: Region = parse_region("rect:60x40").expect("a region");
+    let bounds = region.bounds().expect("bounds");
+    println!("Fills of 60 x 40 mm, seeds 1..={seeds}; exemplar -> mean of fills.\n");
+    println!(
+        "| exemplar | ends /100 mm | junctions /100 mm | crossings /100 mm | curvature distance | orientation distance | coverage | time ms (median, max) | output length mm |"
+    );
+    println!("|---|---|---|---|---|---|---|---|---|");
+    for name in BUILTIN_CURVES {
+        let exemplar = CurveExemplar::builtin(name).expect("a built-in");
+        let ex_paths = polylines(exemplar.paths.iter().map(|p| (p.points_mm.clone(), p.closed)));
+        let ex_bounds = Rect::from_points(ex_paths.iter().flat_map(|p| p.0.iter().copied())).expect("points");
+        let ex = curve_statistics_within(&ex_paths, &ex_bounds, margin);
+        let ex_region =
+            Region::new(vec![tracery_core::geom::Polygon { outer: ex_bounds.corners().to_vec(), holes: vec![] }]);
+        let ex_cover = coverage(&ex_paths, &ex_region.clone(), margin);
+        let mut runs: Vec<(CurveStatistics, f64, f64)> = Vec::new();
+        for seed in 1..=seeds {
+            let mut s = settings.clone();
+            s.seed = seed;
+            let start = std::time::Instant::now();
+            let product = make_product(&exemplar, &region, &s, &Control::default()).expect("a fill");
+            let ms = start.elapsed().as_secs_f64() * 1e3;
+            let paths = polylines(product.paths_mm.iter().map(|p| (p.points_mm.clone(), p.closed)));
+            runs.push((curve_statistics_within(&paths, &bounds, margin), coverage(&paths, &region, margin), ms));
+        }
+        let mean =
+            |f: &dyn Fn(&(CurveStatistics, f64, f64)) -> f64| runs.iter().map(f).sum::<f64>() / runs.len() as f64;
+        let mut times: Vec<f64> = runs.iter().map(|r| r.2).collect();
+        times.sort_by(f64::total_cmp);
+        println!(
+            "| {name} | {:.1} → {:.1} | {:.1} → {:.1} | {:.2} → {:.2} | {:.2} | {:.2} | {:.2} → {:.2} | {:.0}, {:.0} | {:.0} |",
+            ex.ends_per_100mm,
+            mean(&|r| r.0.ends_per_100mm),
+            ex.junctions_per_100mm,
+            mean(&|r| r.0.junctions_per_100mm),
+            ex.crossings_per_100mm,
+            mean(&|r| r.0.crossings_per_100mm),
+            mean(&|r| histogram_distance(&r.0.curvature, &ex.curvature)),
+            mean(&|r| histogram_distance(&r.0.orientation, &ex.orientation)),
+            ex_cover,
+            mean(&|r| r.1),
+            times[times.len() / 2],
+            times[times.len() - 1],
+            mean(&|r| r.0.length_mm),
+        );
+    }
+}
