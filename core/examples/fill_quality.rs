@@ -7,7 +7,10 @@
 
 use tracery_core::control::Control;
 use tracery_core::geom::{Rect, Region};
-use tracery_core::quality::{CurveStatistics, coverage, curve_statistics_within, histogram_distance};
+use tracery_core::quality::{
+    CURVATURE_BIN, CurveStatistics, ORIENTATION_BINS, coverage, curve_statistics_within, histogram_emd,
+    histogram_emd_circular,
+};
 use tracery_core::region_fill::{BUILTIN_CURVES, CurveExemplar, Settings, make_product, parse_region};
 
 fn polylines(paths: impl Iterator<Item = (Vec<tracery_core::DVec2>, bool)>) -> Vec<(Vec<tracery_core::DVec2>, bool)> {
@@ -22,7 +25,7 @@ fn main() {
     let bounds = region.bounds().expect("bounds");
     println!("Fills of 60 x 40 mm, seeds 1..={seeds}; exemplar -> mean of fills.\n");
     println!(
-        "| exemplar | ends /100 mm | junctions /100 mm | crossings /100 mm | curvature distance | orientation distance | coverage | time ms (median, max) | output length mm |"
+        "| exemplar | ends /100 mm | junctions /100 mm | crossings /100 mm | curvature EMD (1/mm) | orientation EMD (°) | coverage | time ms (median, max) | output length mm |"
     );
     println!("|---|---|---|---|---|---|---|---|---|");
     for name in BUILTIN_CURVES {
@@ -48,15 +51,15 @@ fn main() {
         let mut times: Vec<f64> = runs.iter().map(|r| r.2).collect();
         times.sort_by(f64::total_cmp);
         println!(
-            "| {name} | {:.1} → {:.1} | {:.1} → {:.1} | {:.2} → {:.2} | {:.2} | {:.2} | {:.2} → {:.2} | {:.0}, {:.0} | {:.0} |",
+            "| {name} | {:.1} → {:.1} | {:.1} → {:.1} | {:.2} → {:.2} | {:.3} | {:.1} | {:.2} → {:.2} | {:.0}, {:.0} | {:.0} |",
             ex.ends_per_100mm,
             mean(&|r| r.0.ends_per_100mm),
             ex.junctions_per_100mm,
             mean(&|r| r.0.junctions_per_100mm),
             ex.crossings_per_100mm,
             mean(&|r| r.0.crossings_per_100mm),
-            mean(&|r| histogram_distance(&r.0.curvature, &ex.curvature)),
-            mean(&|r| histogram_distance(&r.0.orientation, &ex.orientation)),
+            mean(&|r| histogram_emd(&r.0.curvature, &ex.curvature, CURVATURE_BIN)),
+            mean(&|r| histogram_emd_circular(&r.0.orientation, &ex.orientation, 180.0 / ORIENTATION_BINS as f64)),
             ex_cover,
             mean(&|r| r.1),
             times[times.len() / 2],

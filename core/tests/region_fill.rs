@@ -315,3 +315,50 @@ fn a_bounded_comparison_gives_up_only_when_the_full_one_is_no_cheaper() {
     }
     assert!(pruned > 0 && kept > 0, "both outcomes tried: {pruned} pruned, {kept} kept");
 }
+
+/// Fills of every built-in, measured by `quality::curve_statistics` (which
+/// reads only the output's polylines, never the synthesis's graph) against
+/// the exemplar measured the same way.
+#[test]
+fn fills_look_like_their_exemplars_by_independent_measures() {
+    use tracery_core::control::Control;
+    use tracery_core::geom::{Polygon, Rect, Region};
+    use tracery_core::quality::{
+        CURVATURE_BIN, ORIENTATION_BINS, coverage, curve_statistics_within, histogram_emd, histogram_emd_circular,
+    };
+    use tracery_core::region_fill::{CurveExemplar, Settings, make_product, parse_region};
+    let settings = Settings::default();
+    let margin = settings.radius_mm();
+    let region = parse_region("rect:50x35").unwrap();
+    let bounds = region.bounds().unwrap();
+    for name in BUILTIN_CURVES {
+        let exemplar = CurveExemplar::builtin(name).unwrap();
+        let ex_paths: Vec<_> = exemplar.paths.iter().map(|p| (p.points_mm.clone(), p.closed)).collect();
+        let ex_bounds = Rect::from_points(ex_paths.iter().flat_map(|p| p.0.iter().copied())).unwrap();
+        let ex = curve_statistics_within(&ex_paths, &ex_bounds, margin);
+        let ex_region = Region::new(vec![Polygon { outer: ex_bounds.corners().to_vec(), holes: vec![] }]);
+        let product = make_product(&exemplar, &region, &settings, &Control::default()).unwrap();
+        let paths: Vec<_> = product.paths_mm.iter().map(|p| (p.points_mm.clone(), p.closed)).collect();
+        let out = curve_statistics_within(&paths, &bounds, margin);
+        let near = |a: f64, b: f64, what: &str| {
+            assert!(
+                (a - b).abs() <= 0.5 * b.max(a) + 1.5,
+                "{name}: {what} {a:.1} per 100 mm against the exemplar's {b:.1}"
+            );
+        };
+        near(out.ends_per_100mm, ex.ends_per_100mm, "free ends");
+        near(out.junctions_per_100mm, ex.junctions_per_100mm, "junctions");
+        if ex.crossings_per_100mm == 0.0 {
+            assert_eq!(out.crossings_per_100mm, 0.0, "{name}: paths cross where the exemplar's never do");
+        }
+        let curvature = histogram_emd(&out.curvature, &ex.curvature, CURVATURE_BIN);
+        let orientation = histogram_emd_circular(&out.orientation, &ex.orientation, 180.0 / ORIENTATION_BINS as f64);
+        assert!(curvature < 0.15, "{name}: curvature {curvature:.3} /mm from the exemplar's");
+        assert!(orientation < 12.0, "{name}: orientation {orientation:.1}° from the exemplar's");
+        let (cover, ex_cover) = (coverage(&paths, &region, margin), coverage(&ex_paths, &ex_region, margin));
+        assert!(
+            cover >= 0.8 * ex_cover,
+            "{name}: covers {cover:.2} of the region, the exemplar {ex_cover:.2} of its own"
+        );
+    }
+}

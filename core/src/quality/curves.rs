@@ -17,13 +17,13 @@ pub const MEET_TOLERANCE_MM: f64 = 0.05;
 pub const BEND_STEP_MM: f64 = 0.5;
 
 /// Bins of the curvature histogram, each [`CURVATURE_BIN`] wide (1/mm), the last open.
-pub const CURVATURE_BINS: usize = 8;
+pub const CURVATURE_BINS: usize = 40;
 
 /// Width of a curvature bin, 1/mm.
-pub const CURVATURE_BIN: f64 = 0.1;
+pub const CURVATURE_BIN: f64 = 0.02;
 
 /// Bins of the orientation histogram over half a turn (a path runs both ways).
-pub const ORIENTATION_BINS: usize = 12;
+pub const ORIENTATION_BINS: usize = 36;
 
 /// What a curve pattern is like, per length of curve so patterns of any
 /// size compare.
@@ -39,9 +39,9 @@ pub struct CurveStatistics {
     /// Proper crossings (two paths passing through each other) per 100 mm.
     pub crossings_per_100mm: f64,
     /// Share of the length in each curvature bin.
-    pub curvature: [f64; CURVATURE_BINS],
+    pub curvature: Vec<f64>,
     /// Share of the length in each orientation bin (0 to π).
-    pub orientation: [f64; ORIENTATION_BINS],
+    pub orientation: Vec<f64>,
 }
 
 /// Half the sum of absolute differences of two histograms of shares: 0
@@ -54,6 +54,50 @@ pub struct CurveStatistics {
 /// ```
 pub fn histogram_distance(a: &[f64], b: &[f64]) -> f64 {
     0.5 * a.iter().zip(b).map(|(x, y)| (x - y).abs()).sum::<f64>()
+}
+
+/// The earth mover's distance between two histograms of shares over
+/// ordered bins `bin_width` wide: how far, in the bins' unit, the length
+/// of one must move to make the other. Unlike bin-by-bin differences it
+/// does not jump when a pattern's one curvature sits on a bin's edge.
+///
+/// ```
+/// use tracery_core::quality::histogram_emd;
+/// assert_eq!(histogram_emd(&[1.0, 0.0, 0.0], &[1.0, 0.0, 0.0], 0.1), 0.0);
+/// assert!((histogram_emd(&[1.0, 0.0, 0.0], &[0.0, 0.0, 1.0], 0.1) - 0.2).abs() < 1e-12);
+/// ```
+pub fn histogram_emd(a: &[f64], b: &[f64], bin_width: f64) -> f64 {
+    let (mut carried, mut total) = (0.0, 0.0);
+    for (x, y) in a.iter().zip(b) {
+        carried += x - y;
+        total += carried.abs();
+    }
+    total * bin_width
+}
+
+/// [`histogram_emd`] for bins round a circle (directions), where the last
+/// bin is next to the first: the cumulative differences less their median,
+/// which is the cheapest way round.
+///
+/// ```
+/// use tracery_core::quality::histogram_emd_circular;
+/// // All in the last bin against all in the first: one bin apart round the circle.
+/// assert!((histogram_emd_circular(&[1.0, 0.0, 0.0, 0.0], &[0.0, 0.0, 0.0, 1.0], 5.0) - 5.0).abs() < 1e-12);
+/// ```
+pub fn histogram_emd_circular(a: &[f64], b: &[f64], bin_width: f64) -> f64 {
+    let mut carried = 0.0;
+    let mut cumulative: Vec<f64> = a
+        .iter()
+        .zip(b)
+        .map(|(x, y)| {
+            carried += x - y;
+            carried
+        })
+        .collect();
+    let mut sorted = cumulative.clone();
+    sorted.sort_by(f64::total_cmp);
+    let median = sorted.get(sorted.len() / 2).copied().unwrap_or(0.0);
+    cumulative.iter_mut().map(|c| (*c - median).abs()).sum::<f64>() * bin_width
 }
 
 /// A segment of a path: which path, and its ends.
@@ -166,11 +210,17 @@ fn statistics(paths: &[(Vec<DVec2>, bool)], counted: &dyn Fn(DVec2) -> bool) -> 
             continue;
         }
         for (k, end) in [(0, points[0]), (points.len() - 1, points[points.len() - 1])] {
+            // Touching another path away from that path's own ends (ends
+            // meeting are counted by place below).
             let touches = grid.near(end, MEET_TOLERANCE_MM).any(|s| {
                 let seg = &grid.segments[s];
                 let own_end = seg.path == path && (seg.index == k || seg.index + 1 == k);
-                let at_an_end = seg.a.distance(end) < MEET_TOLERANCE_MM || seg.b.distance(end) < MEET_TOLERANCE_MM;
-                !own_end && !at_an_end && closest_on_segment(end, seg.a, seg.b).1.distance(end) < MEET_TOLERANCE_MM
+                let (other, other_closed) = (&paths[seg.path].0, paths[seg.path].1);
+                let near = closest_on_segment(end, seg.a, seg.b).1;
+                let at_its_end = !other_closed
+                    && (near.distance(other[0]) < MEET_TOLERANCE_MM
+                        || near.distance(other[other.len() - 1]) < MEET_TOLERANCE_MM);
+                !own_end && !at_its_end && near.distance(end) < MEET_TOLERANCE_MM
             });
             match places.iter_mut().find(|(p, _, _)| p.distance(end) < MEET_TOLERANCE_MM) {
                 Some(place) => {
@@ -216,8 +266,8 @@ fn statistics(paths: &[(Vec<DVec2>, bool)], counted: &dyn Fn(DVec2) -> bool) -> 
 
 /// The curvature and orientation histograms, by length, from each path
 /// resampled every [`BEND_STEP_MM`].
-fn bends_and_directions(paths: &[(Vec<DVec2>, bool)]) -> ([f64; CURVATURE_BINS], [f64; ORIENTATION_BINS]) {
-    let (mut curvature, mut orientation) = ([0.0; CURVATURE_BINS], [0.0; ORIENTATION_BINS]);
+fn bends_and_directions(paths: &[(Vec<DVec2>, bool)]) -> (Vec<f64>, Vec<f64>) {
+    let (mut curvature, mut orientation) = (vec![0.0; CURVATURE_BINS], vec![0.0; ORIENTATION_BINS]);
     for (points, closed) in paths {
         let resampled = resample(points, *closed, BEND_STEP_MM);
         let n = resampled.len();

@@ -7,7 +7,7 @@ mod curves;
 
 pub use curves::{
     BEND_STEP_MM, CURVATURE_BIN, CURVATURE_BINS, CurveStatistics, MEET_TOLERANCE_MM, ORIENTATION_BINS, coverage,
-    curve_statistics, curve_statistics_within, histogram_distance,
+    curve_statistics, curve_statistics_within, histogram_distance, histogram_emd, histogram_emd_circular,
 };
 
 use glam::DVec2;
