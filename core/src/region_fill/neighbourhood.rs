@@ -82,6 +82,15 @@ pub fn edge_vectors(graph: &SampleGraph) -> Vec<EdgeVectors> {
 /// three or four at a junction), and this is called for every pair of
 /// samples the search compares.
 fn least_matching_sum(rows: &[DVec2], columns: &[DVec2], used: &mut [bool; 8]) -> f64 {
+    // The usual cases, without the recursion: an end, or a path sample
+    // against a path sample.
+    match (rows, columns) {
+        ([a], _) if !used.iter().any(|&u| u) => {
+            return columns.iter().map(|c| a.distance(*c)).fold(f64::INFINITY, f64::min);
+        }
+        ([a, b], [c, d]) => return (a.distance(*c) + b.distance(*d)).min(a.distance(*d) + b.distance(*c)),
+        _ => {}
+    }
     let Some((first, rest)) = rows.split_first() else {
         return 0.0;
     };
@@ -227,6 +236,7 @@ impl NeighbourhoodPair<'_> {
             self.members_o.iter().map(|&s| unmatched_cost(output, s as usize, similarity.delta_mm)).collect();
         let mut costs = vec![0.0; n * m];
         let mut lower = 0.0;
+        let mut row_least: SmallVec<[f64; 64]> = SmallVec::with_capacity(n);
         for (o, &so) in self.members_o.iter().enumerate() {
             let offset_o = output.samples[so as usize].position_mm - centre_o;
             let row = &mut costs[o * m..(o + 1) * m];
@@ -235,12 +245,14 @@ impl NeighbourhoodPair<'_> {
                 *c = offset_o.distance(*offset_i);
                 least = least.min(*c);
             }
+            row_least.push(least);
             lower += least;
         }
         if lower >= bound {
             return None;
         }
-        lower = 0.0;
+        // Row by row, each row's offsets-only least gives way to its least
+        // with edges; the bound is checked after each.
         for (o, &so) in self.members_o.iter().enumerate() {
             let row = &mut costs[o * m..(o + 1) * m];
             let mut least = unmatched[o];
@@ -261,10 +273,10 @@ impl NeighbourhoodPair<'_> {
                 }
                 least = least.min(*c);
             }
-            lower += least;
-        }
-        if lower >= bound {
-            return None;
+            lower += least - row_least[o];
+            if lower >= bound {
+                return None;
+            }
         }
         // Inputs no output sample may match are left out of the assignment.
         let useful: SmallVec<[usize; 64]> = (0..m).filter(|&i| (0..n).any(|o| costs[o * m + i].is_finite())).collect();

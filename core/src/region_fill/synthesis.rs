@@ -19,10 +19,18 @@ use super::{
 /// Patches (section 4.3.2): the rectangle `size_mm` is tiled with squares
 /// `patch_mm` wide, each filled with the samples (not the edges) of a
 /// random square of the input, leaving out samples within half a spacing
-/// of ones already placed.
-fn initialize(input: &SampleGraph, size_mm: DVec2, patch_mm: f64, delta_mm: f64, rng: &mut SplitMix64) -> SampleGraph {
+/// of ones already placed. Also the input sample each was copied from:
+/// the search starts from there rather than at random.
+fn initialize(
+    input: &SampleGraph,
+    size_mm: DVec2,
+    patch_mm: f64,
+    delta_mm: f64,
+    rng: &mut SplitMix64,
+) -> (SampleGraph, NearestField) {
     let (low, high) = bounds(input);
     let mut output = SampleGraph::default();
+    let mut sources = NearestField::default();
     let grid_of = |g: &SampleGraph| SampleGrid::new(g, delta_mm);
     let (nx, ny) = ((size_mm.x / patch_mm).ceil() as usize, (size_mm.y / patch_mm).ceil() as usize);
     for j in 0..ny {
@@ -31,7 +39,7 @@ fn initialize(input: &SampleGraph, size_mm: DVec2, patch_mm: f64, delta_mm: f64,
             let room = (high - low - DVec2::splat(patch_mm)).max(DVec2::ZERO);
             let source = low + DVec2::new(rng.next_unit(), rng.next_unit()) * room;
             let placed = grid_of(&output);
-            for sample in &input.samples {
+            for (s, sample) in input.samples.iter().enumerate() {
                 let local = sample.position_mm - source;
                 if local.x < 0.0 || local.y < 0.0 || local.x >= patch_mm || local.y >= patch_mm {
                     continue;
@@ -41,10 +49,12 @@ fn initialize(input: &SampleGraph, size_mm: DVec2, patch_mm: f64, delta_mm: f64,
                     continue;
                 }
                 output.add_sample(at);
+                sources.input_of.push(s as u32);
+                sources.cost.push(f64::MAX);
             }
         }
     }
-    output
+    (output, sources)
 }
 
 fn bounds(graph: &SampleGraph) -> (DVec2, DVec2) {
@@ -88,9 +98,12 @@ pub fn synthesize(
         let delta = settings.delta_mm * 2f64.powi((LEVELS - 1 - level) as i32);
         let radius = settings.radius_spacings * delta;
         let input = SampleGraph::new(exemplar, delta)?;
-        let output = match &paths {
-            None => initialize(&input, size, 2.0 * radius, delta, &mut rng),
-            Some(p) => SampleGraph::new(p, delta)?,
+        let (output, start) = match &paths {
+            None => {
+                let (output, sources) = initialize(&input, size, 2.0 * radius, delta, &mut rng);
+                (output, Some(sources))
+            }
+            Some(p) => (SampleGraph::new(p, delta)?, None),
         };
         let at = Level {
             size_mm: size,
@@ -101,7 +114,7 @@ pub fn synthesize(
             done: (level * settings.iterations) as f32,
             steps,
         };
-        let output = synthesize_level(&input, output, &at, &mut rng)?;
+        let output = synthesize_level(&input, output, start, &at, &mut rng)?;
         paths = Some(output.to_paths());
     }
     let offset = bounds.min;
@@ -130,6 +143,7 @@ struct Level<'a, 'c> {
 fn synthesize_level(
     input: &SampleGraph,
     mut output: SampleGraph,
+    start: Option<NearestField>,
     level: &Level,
     rng: &mut SplitMix64,
 ) -> Result<SampleGraph, FillError> {
@@ -138,7 +152,7 @@ fn synthesize_level(
     let project = |p: DVec2| p.clamp(DVec2::ZERO, size_mm);
     // The exemplar's neighbourhoods are the same at every step of a level.
     let input_near = Neighbourhoods::new(input, radius_mm);
-    let mut field: Option<NearestField> = None;
+    let mut field: Option<NearestField> = start;
     for step in 0..level.iterations {
         level.control.check()?;
         level.control.report((level.done + step as f32) / level.steps);
