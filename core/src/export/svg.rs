@@ -106,14 +106,7 @@ pub fn write_svg(region: &Region, options: &SvgOptions) -> String {
         _ => offset(&union(&[region]), options.kerf_mm / 2.0),
     };
     let bounds = region.bounds().unwrap_or(Rect::new(DVec2::ZERO, DVec2::ONE)).inflate(MARGIN_MM);
-    let (w, h) = (bounds.width(), bounds.height());
-    // Plane (mm, y up) to the page (mm, y down, origin at the top left).
-    let to_page = |p: DVec2| DVec2::new(p.x - bounds.min.x, bounds.max.y - p.y);
-    let mut svg = String::new();
-    let _ = writeln!(
-        svg,
-        r#"<svg xmlns="http://www.w3.org/2000/svg" width="{w:.3}mm" height="{h:.3}mm" viewBox="0 0 {w:.3} {h:.3}">"#
-    );
+    let (mut svg, to_page) = page(&bounds);
     match options.flavour {
         SvgFlavour::Engrave => {
             let _ = writeln!(svg, r#"  <g id="engrave">"#);
@@ -140,6 +133,20 @@ pub fn write_svg(region: &Region, options: &SvgOptions) -> String {
     }
     svg.push_str("  </g>\n</svg>\n");
     svg
+}
+
+/// The document's opening tag for a page covering `bounds` (mm), and the
+/// map from the plane (mm, `y` up) to the page (mm, `y` down, origin at
+/// the top left).
+fn page(bounds: &Rect) -> (String, impl Fn(DVec2) -> DVec2 + Copy + use<>) {
+    let (w, h) = (bounds.width(), bounds.height());
+    let (min_x, max_y) = (bounds.min.x, bounds.max.y);
+    let mut svg = String::new();
+    let _ = writeln!(
+        svg,
+        r#"<svg xmlns="http://www.w3.org/2000/svg" width="{w:.3}mm" height="{h:.3}mm" viewBox="0 0 {w:.3} {h:.3}">"#
+    );
+    (svg, move |p: DVec2| DVec2::new(p.x - min_x, max_y - p.y))
 }
 
 /// One closed subpath, with points that round to the same written
@@ -181,13 +188,7 @@ pub fn write_paths_svg(paths: &[crate::product::StrokedPath]) -> String {
     let bounds = Rect::from_points(paths.iter().flat_map(|p| p.points_mm.iter().copied()))
         .unwrap_or(Rect::new(DVec2::ZERO, DVec2::ONE))
         .inflate(MARGIN_MM + reach);
-    let (w, h) = (bounds.width(), bounds.height());
-    let to_page = |p: DVec2| DVec2::new(p.x - bounds.min.x, bounds.max.y - p.y);
-    let mut svg = String::new();
-    let _ = writeln!(
-        svg,
-        r#"<svg xmlns="http://www.w3.org/2000/svg" width="{w:.3}mm" height="{h:.3}mm" viewBox="0 0 {w:.3} {h:.3}">"#
-    );
+    let (mut svg, to_page) = page(&bounds);
     let _ = writeln!(
         svg,
         r#"  <g id="strokes" fill="none" stroke="black" stroke-linecap="round" stroke-linejoin="round">"#
