@@ -45,6 +45,7 @@ pub mod random;
 pub mod raster_brush;
 pub mod region_fill;
 pub mod report;
+pub mod setting;
 pub mod surface;
 pub mod vector_brush;
 

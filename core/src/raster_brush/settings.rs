@@ -1,6 +1,8 @@
 //! [`Settings`]: everything a person chooses for the raster brush, declared
 //! once for the document, the command line and the app.
 
+pub use crate::setting::InvalidSetting;
+use crate::setting::positive_mm;
 use serde::{Deserialize, Serialize};
 
 /// The raster brush's settings, with the one set of defaults
@@ -47,11 +49,6 @@ impl Default for Settings {
     }
 }
 
-/// A setting out of range, in words a person understands.
-#[derive(Clone, Debug, PartialEq, thiserror::Error)]
-#[error("{0}")]
-pub struct InvalidSetting(pub String);
-
 /// The largest scale: above it the band is narrower than the pattern, and
 /// no piece could slice it without cutting through it.
 pub const MAX_SCALE: f64 = 1.0;
@@ -59,16 +56,9 @@ pub const MAX_SCALE: f64 = 1.0;
 impl Settings {
     /// Checks every number is in range.
     pub fn validate(&self) -> Result<(), InvalidSetting> {
-        let positive = |what: &str, x: f64| {
-            if x.is_finite() && x > 0.0 {
-                Ok(())
-            } else {
-                Err(InvalidSetting(format!("{what} must be a positive number of millimetres, not {x}")))
-            }
-        };
-        positive("the band", self.band_mm)?;
-        positive("the step", self.step_mm)?;
-        positive("the thickness", self.thickness_mm)?;
+        positive_mm("the band", self.band_mm)?;
+        positive_mm("the step", self.step_mm)?;
+        positive_mm("the thickness", self.thickness_mm)?;
         if !(self.variety.is_finite() && self.variety >= 0.0) {
             return Err(InvalidSetting(format!("variety must be zero or more, not {}", self.variety)));
         }

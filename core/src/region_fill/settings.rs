@@ -1,6 +1,8 @@
 //! [`Settings`]: everything a person chooses for region fill, declared once
 //! for the document, the command line and the app.
 
+pub use crate::setting::InvalidSetting;
+use crate::setting::positive_mm;
 use serde::{Deserialize, Serialize};
 
 /// Region fill's settings, with the one set of defaults
@@ -55,11 +57,6 @@ impl Default for Settings {
     }
 }
 
-/// A setting out of range, in words a person understands.
-#[derive(Clone, Debug, PartialEq, thiserror::Error)]
-#[error("{0}")]
-pub struct InvalidSetting(pub String);
-
 /// The finest sample spacing allowed, mm: finer would only multiply the
 /// samples of a pattern no printer or pen could show.
 pub const MIN_DELTA_MM: f64 = 0.2;
@@ -70,16 +67,9 @@ pub const MAX_ITERATIONS: usize = 50;
 impl Settings {
     /// Checks every number is in range.
     pub fn validate(&self) -> Result<(), InvalidSetting> {
-        let positive = |what: &str, x: f64| {
-            if x.is_finite() && x > 0.0 {
-                Ok(())
-            } else {
-                Err(InvalidSetting(format!("{what} must be a positive number of millimetres, not {x}")))
-            }
-        };
-        positive("the sample spacing", self.delta_mm)?;
-        positive("the stroke width", self.stroke_width_mm)?;
-        positive("the thickness", self.thickness_mm)?;
+        positive_mm("the sample spacing", self.delta_mm)?;
+        positive_mm("the stroke width", self.stroke_width_mm)?;
+        positive_mm("the thickness", self.thickness_mm)?;
         if self.delta_mm < MIN_DELTA_MM {
             return Err(InvalidSetting(format!(
                 "the sample spacing must be at least {MIN_DELTA_MM} mm, not {}",

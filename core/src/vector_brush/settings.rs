@@ -6,6 +6,8 @@
 use serde::{Deserialize, Serialize};
 
 use super::{SliceOptions, SlicingMode, Target};
+pub use crate::setting::InvalidSetting;
+use crate::setting::{positive, positive_mm};
 
 /// The vector brush's settings, with the one documented set of defaults
 /// (`docs/vector-brush.md` lists them).
@@ -73,24 +75,12 @@ impl Default for Settings {
     }
 }
 
-/// A setting out of range, in words a person understands.
-#[derive(Clone, Debug, PartialEq, thiserror::Error)]
-#[error("{0}")]
-pub struct InvalidSetting(pub String);
-
 impl Settings {
     /// Checks every number is in range.
     pub fn validate(&self) -> Result<(), InvalidSetting> {
-        let positive = |what: &str, x: f64, unit: &str| {
-            if x.is_finite() && x > 0.0 {
-                Ok(())
-            } else {
-                Err(InvalidSetting(format!("{what} must be a positive number{unit}, not {x}")))
-            }
-        };
-        positive("the band", self.band_mm, " of millimetres")?;
+        positive_mm("the band", self.band_mm)?;
         positive("the scale", self.scale, "")?;
-        positive("the thickness", self.thickness_mm, " of millimetres")?;
+        positive_mm("the thickness", self.thickness_mm)?;
         if !(self.variety.is_finite() && self.variety >= 0.0) {
             return Err(InvalidSetting(format!("variety must be zero or more, not {}", self.variety)));
         }
