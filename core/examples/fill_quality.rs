@@ -13,10 +13,6 @@ use tracery_core::quality::{
 };
 use tracery_core::region_fill::{BUILTIN_CURVES, CurveExemplar, Settings, make_product, parse_region};
 
-fn polylines(paths: impl Iterator<Item = (Vec<tracery_core::DVec2>, bool)>) -> Vec<(Vec<tracery_core::DVec2>, bool)> {
-    paths.collect()
-}
-
 fn main() {
     let seeds: u64 = std::env::args().nth(1).and_then(|s| s.parse().ok()).unwrap_or(3);
     let settings = Settings::default();
@@ -30,12 +26,12 @@ fn main() {
     println!("|---|---|---|---|---|---|---|---|---|");
     for name in BUILTIN_CURVES {
         let exemplar = CurveExemplar::builtin(name).expect("a built-in");
-        let ex_paths = polylines(exemplar.paths.iter().map(|p| (p.points_mm.clone(), p.closed)));
+        let ex_paths: Vec<_> = exemplar.paths.iter().map(|p| (p.points_mm.clone(), p.closed)).collect();
         let ex_bounds = Rect::from_points(ex_paths.iter().flat_map(|p| p.0.iter().copied())).expect("points");
         let ex = curve_statistics_within(&ex_paths, &ex_bounds, margin);
         let ex_region =
             Region::new(vec![tracery_core::geom::Polygon { outer: ex_bounds.corners().to_vec(), holes: vec![] }]);
-        let ex_cover = coverage(&ex_paths, &ex_region.clone(), margin);
+        let ex_cover = coverage(&ex_paths, &ex_region, margin);
         let mut runs: Vec<(CurveStatistics, f64, f64)> = Vec::new();
         for seed in 1..=seeds {
             let mut s = settings.clone();
@@ -43,7 +39,7 @@ fn main() {
             let start = std::time::Instant::now();
             let product = make_product(&exemplar, &region, &s, &Control::default()).expect("a fill");
             let ms = start.elapsed().as_secs_f64() * 1e3;
-            let paths = polylines(product.paths_mm.iter().map(|p| (p.points_mm.clone(), p.closed)));
+            let paths: Vec<_> = product.paths_mm.iter().map(|p| (p.points_mm.clone(), p.closed)).collect();
             runs.push((curve_statistics_within(&paths, &bounds, margin), coverage(&paths, &region, margin), ms));
         }
         let mean =
