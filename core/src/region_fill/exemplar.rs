@@ -30,8 +30,8 @@ impl CurveExemplar {
     }
 
     /// Every subpath of an SVG drawing's stroked paths, and the outline of
-    /// each filled shape that is not stroked (a discrete element drawn
-    /// filled), sized in millimetres as `--along svg:` sizes drawings.
+    /// each filled shape (a discrete element drawn filled; closed, as fills
+    /// are, whether or not it ends with a `Z`), sized in millimetres as `--along svg:` sizes drawings.
     ///
     /// ```
     /// use tracery_core::region_fill::CurveExemplar;
@@ -39,13 +39,17 @@ impl CurveExemplar {
     ///   <path d="M0,20 Q10,0 20,20 T40,20" fill="none" stroke="black"/></svg>"#;
     /// let e = CurveExemplar::from_svg_data("wave", svg.as_bytes()).unwrap();
     /// assert_eq!(e.paths.len(), 1);
+    /// // A filled shape without a `Z` is still a closed outline.
+    /// let open_fill = r#"<svg xmlns="http://www.w3.org/2000/svg" viewBox="0 0 40 40"><path d="M0,0 L30,0 L30,30"/></svg>"#;
+    /// assert!(CurveExemplar::from_svg_data("fill", open_fill.as_bytes()).unwrap().paths[0].closed);
     /// assert!(CurveExemplar::from_svg_data("empty", br#"<svg xmlns="http://www.w3.org/2000/svg"/>"#).is_err());
     /// ```
     pub fn from_svg_data(name: impl Into<String>, data: &[u8]) -> Result<CurveExemplar, FillError> {
         let paths: Vec<CurvePath> = svg_shapes(data, EXEMPLAR_TOLERANCE_MM)?
             .into_iter()
-            .filter(|s| (s.stroked || (s.filled && s.closed)) && s.points_mm.len() >= 2)
-            .map(|s| CurvePath { closed: s.closed && s.points_mm.len() > 2, points_mm: s.points_mm })
+            .filter(|s| (s.stroked || s.filled) && s.points_mm.len() >= 2)
+            // A fill closes every subpath, with a `Z` or without.
+            .map(|s| CurvePath { closed: (s.closed || s.filled) && s.points_mm.len() > 2, points_mm: s.points_mm })
             .filter(|p| p.length_mm() > 0.0)
             .collect();
         if paths.is_empty() {
