@@ -32,11 +32,13 @@ const POSITION_SWEEPS: usize = 20;
 /// should lie from their centre as the matched input members lie from
 /// theirs. Solved in the least-squares sense by Jacobi sweeps from the
 /// current positions; a sample outside `inside` is pulled back to its
-/// nearest point of the domain by `project`.
+/// nearest point of the domain by `project`. Samples `0..pinned` (drawn by
+/// the person) keep their places and only cast votes.
 pub fn assign_positions(
     output: &mut SampleGraph,
     input: &SampleGraph,
     pairs: &[MatchedPair],
+    pinned: usize,
     project: &dyn Fn(DVec2) -> DVec2,
 ) {
     // Each vote: (a, b, d) says p(b) - p(a) should be d.
@@ -63,7 +65,7 @@ pub fn assign_positions(
             sum[a as usize] += pb - d;
             count[a as usize] += 1.0;
         }
-        for s in 0..n {
+        for s in pinned..n {
             if count[s] > 0.0 {
                 // Half toward the votes' mean: Jacobi sweeps with damping converge on such graphs.
                 let target = sum[s] / count[s];
@@ -95,9 +97,12 @@ pub fn existence_votes(samples: usize, pairs: &[MatchedPair]) -> Vec<f64> {
 /// expected confidence is its votes over the pairs holding both ends, and
 /// a sample's expected edge count the mean of its matches'. Edges are then
 /// taken greedily, most confident first, when taking one brings the
-/// confidences and the counts closer (equation 21).
-pub fn assign_edges(output: &mut SampleGraph, input: &SampleGraph, pairs: &[MatchedPair]) {
+/// confidences and the counts closer (equation 21). Edges between samples
+/// `0..pinned` (drawn by the person) are kept as they are, and no other
+/// edge joins two of them.
+pub fn assign_edges(output: &mut SampleGraph, input: &SampleGraph, pairs: &[MatchedPair], pinned: usize) {
     let n = output.samples.len();
+    let drawn: Vec<(u32, u32)> = output.edges_among(pinned);
     let mut votes: FxHashMap<(u32, u32), f64> = FxHashMap::default();
     let (mut degree_sum, mut degree_count) = (vec![0.0; n], vec![0.0; n]);
     for pair in pairs {
@@ -138,8 +143,15 @@ pub fn assign_edges(output: &mut SampleGraph, input: &SampleGraph, pairs: &[Matc
         votes.iter().map(|(&key, &v)| (key, v / both_held.get(&key).copied().unwrap_or(v).max(v))).collect();
     candidates.sort_by(|a, b| b.1.total_cmp(&a.1).then(a.0.cmp(&b.0)));
     let mut degree = vec![0usize; n];
-    let mut chosen = Vec::new();
+    for &(a, b) in &drawn {
+        degree[a as usize] += 1;
+        degree[b as usize] += 1;
+    }
+    let mut chosen = drawn;
     for ((a, b), confidence) in candidates {
+        if (a as usize) < pinned && (b as usize) < pinned {
+            continue;
+        }
         let (da, db) = (degree[a as usize] as f64, degree[b as usize] as f64);
         let (ea, eb) = (expected_degree[a as usize], expected_degree[b as usize]);
         let without = confidence + (da - ea).abs() + (db - eb).abs();

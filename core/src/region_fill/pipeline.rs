@@ -4,8 +4,8 @@
 
 use crate::control::Control;
 use crate::geom::{
-    Region, brush_stroke, clip_polylines, count_topology, difference, fill_triangles, intersection, join_parts, offset,
-    union,
+    Rect, Region, brush_stroke, clip_polylines, closest_on_segment, count_topology, difference, fill_triangles,
+    intersection, join_parts, offset, union,
 };
 use crate::mesh::extrude;
 use crate::product::{Fact, Facts, Product, StrokedPath};
@@ -14,7 +14,8 @@ use crate::report::Timings;
 use glam::DVec2;
 
 use super::{
-    CurveExemplar, CurvePath, FillError, FragmentLimits, SampleGraph, Settings, check_region, smooth_paths, synthesize,
+    CurveExemplar, CurvePath, FillError, FragmentLimits, JOIN_TOLERANCE_MM, SampleGraph, Settings, check_region,
+    smooth_paths, synthesize_around,
 };
 
 /// Paths left shorter than this many sample spacings by clipping are
@@ -42,23 +43,24 @@ pub fn make_product(
     settings: &Settings,
     control: &Control,
 ) -> Result<Product, FillError> {
-    settings.validate()?;
-    exemplar.validate(settings.delta_mm)?;
-    check_region(region, settings)?;
-    let bounds = region.bounds().ok_or(FillError::EmptyRegion)?;
+    make_product_around(exemplar, region, &[], settings, control)
+}
+
+/// As [`make_product`], around paths a person drew (`drawn`, mm): the fill
+/// grows out of them and joins them ([`synthesize_around`]). The product's
+/// paths are the new ones; its print holds the drawn ones too, so that
+/// *one piece* and the counts see the whole.
+pub fn make_product_around(
+    exemplar: &CurveExemplar,
+    region: &Region,
+    drawn: &[CurvePath],
+    settings: &Settings,
+    control: &Control,
+) -> Result<Product, FillError> {
     let mut timings = Timings::default();
-    let synthesized = timings.time("synthesis", || synthesize(&exemplar.paths, &bounds, settings, control))?;
-    control.check()?;
-    let smooth = timings.time("reconstruction", || {
-        let radius = settings.radius_mm();
-        let learned = SampleGraph::new(&exemplar.paths, settings.delta_mm).map(|g| g.to_paths());
-        let limits = FragmentLimits::learn(&learned?, radius, FRAGMENT_FALLBACK_SPACINGS * settings.delta_mm);
-        let inner = bounds.inflate(-radius);
-        let anchored = |p: DVec2| !(p.cmpgt(inner.min).all() && p.cmplt(inner.max).all());
-        Ok::<_, FillError>(smooth_paths(&limits.remove_from(synthesized, anchored)))
-    })?;
-    let paths = timings.time("clip", || clip_paths(&smooth, region, MIN_CLIPPED_SPACINGS * settings.delta_mm));
-    let (print, bridges) = timings.time("strokes", || print_region(&paths, region, settings));
+    let paths = predict_timed(exemplar, region, drawn, settings, control, &mut timings)?;
+    let printed: Vec<CurvePath> = paths.iter().chain(&clip_paths(drawn, region, 0.0)).cloned().collect();
+    let (print, bridges) = timings.time("strokes", || print_region(&printed, region, settings));
     control.check()?;
     let topology = count_topology(&print);
     let mesh = timings.time("mesh", || extrude(&print, settings.thickness_mm))?;
@@ -86,6 +88,74 @@ pub fn make_product(
     };
     product.region_mm = print;
     Ok(product)
+}
+
+/// New paths like `exemplar` in `region` (mm) that continue what was
+/// `drawn`: the autocomplete's predictions, and the clone's when the
+/// exemplar is the source region's paths. Synthesized over the region's
+/// bounds, cleared of stray fragments, smoothed and clipped to the region.
+///
+/// ```no_run
+/// use tracery_core::DVec2;
+/// use tracery_core::control::Control;
+/// use tracery_core::region_fill::{CurveExemplar, CurvePath, Settings, parse_region, predict};
+/// let drawn = CurvePath { points_mm: vec![DVec2::new(5.0, 20.0), DVec2::new(35.0, 20.0)], closed: false };
+/// let window = parse_region("rect:40x40").unwrap();
+/// let exemplar = CurveExemplar::builtin("waves").unwrap();
+/// let paths = predict(&exemplar, &window, &[drawn], &Settings::default(), &Control::default()).unwrap();
+/// assert!(!paths.is_empty());
+/// ```
+pub fn predict(
+    exemplar: &CurveExemplar,
+    region: &Region,
+    drawn: &[CurvePath],
+    settings: &Settings,
+    control: &Control,
+) -> Result<Vec<CurvePath>, FillError> {
+    predict_timed(exemplar, region, drawn, settings, control, &mut Timings::default())
+}
+
+fn predict_timed(
+    exemplar: &CurveExemplar,
+    region: &Region,
+    drawn: &[CurvePath],
+    settings: &Settings,
+    control: &Control,
+    timings: &mut Timings,
+) -> Result<Vec<CurvePath>, FillError> {
+    settings.validate()?;
+    exemplar.validate(settings.delta_mm)?;
+    check_region(region, settings)?;
+    let bounds = region.bounds().ok_or(FillError::EmptyRegion)?;
+    // Only what lies within the coarsest neighbourhood of the bounds is context.
+    let reach = bounds.inflate(settings.radius_mm() * 4.0);
+    let near = |p: &CurvePath| {
+        Rect::from_points(p.points_mm.iter().copied())
+            .is_some_and(|b| b.max.cmpge(reach.min).all() && b.min.cmple(reach.max).all())
+    };
+    let drawn: Vec<CurvePath> = drawn.iter().filter(|p| near(p)).cloned().collect();
+    let synthesized =
+        timings.time("synthesis", || synthesize_around(&exemplar.paths, &bounds, &drawn, settings, control))?;
+    control.check()?;
+    let smooth = timings.time("reconstruction", || {
+        let radius = settings.radius_mm();
+        let learned = SampleGraph::new(&exemplar.paths, settings.delta_mm).map(|g| g.to_paths());
+        let limits = FragmentLimits::learn(&learned?, radius, FRAGMENT_FALLBACK_SPACINGS * settings.delta_mm);
+        let inner = bounds.inflate(-radius);
+        // Ends near the edge go on past it, and ends on a drawn path join it: neither is loose.
+        let on_drawn = |p: DVec2| {
+            drawn.iter().any(|d| {
+                let n = d.points_mm.len();
+                let segments = if d.closed { n } else { n.saturating_sub(1) };
+                (0..segments).any(|k| {
+                    closest_on_segment(p, d.points_mm[k], d.points_mm[(k + 1) % n]).1.distance(p) <= JOIN_TOLERANCE_MM
+                })
+            })
+        };
+        let anchored = |p: DVec2| !(p.cmpgt(inner.min).all() && p.cmplt(inner.max).all()) || on_drawn(p);
+        Ok::<_, FillError>(smooth_paths(&limits.remove_from(synthesized, anchored)))
+    })?;
+    Ok(timings.time("clip", || clip_paths(&smooth, region, MIN_CLIPPED_SPACINGS * settings.delta_mm)))
 }
 
 /// The parts of `paths` inside `region`, less stubs shorter than `min_mm`.

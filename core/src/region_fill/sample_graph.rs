@@ -210,6 +210,50 @@ impl SampleGraph {
         self.neighbours[b as usize].push(a);
     }
 
+    /// The edges between two of the samples `0..count`, each once.
+    pub fn edges_among(&self, count: usize) -> Vec<(u32, u32)> {
+        let mut edges = Vec::new();
+        for (a, around) in self.neighbours.iter().enumerate().take(count) {
+            edges.extend(around.iter().filter(|&&b| (b as usize) < count && a < b as usize).map(|&b| (a as u32, b)));
+        }
+        edges
+    }
+
+    /// Removes the edges between two of the samples `0..count`.
+    pub fn disconnect_among(&mut self, count: usize) {
+        let edges = self.edges();
+        self.neighbours = vec![SmallVec::new(); self.samples.len()];
+        for sample in &mut self.samples {
+            sample.orientations.clear();
+        }
+        for [a, b] in edges {
+            if (a as usize) >= count || (b as usize) >= count {
+                self.connect(a, b);
+            }
+        }
+    }
+
+    /// The same graph with the samples `first` marks moved to the front,
+    /// each side in its order; also how many were marked.
+    pub fn pinned_first(&self, first: &[bool]) -> (SampleGraph, usize) {
+        let order: Vec<usize> = (0..self.samples.len())
+            .filter(|&s| first[s])
+            .chain((0..self.samples.len()).filter(|&s| !first[s]))
+            .collect();
+        let mut new_index = vec![0u32; self.samples.len()];
+        for (k, &s) in order.iter().enumerate() {
+            new_index[s] = k as u32;
+        }
+        let mut graph = SampleGraph::default();
+        for &s in &order {
+            graph.add_sample(self.samples[s].position_mm);
+        }
+        for [a, b] in self.edges() {
+            graph.connect(new_index[a as usize], new_index[b as usize]);
+        }
+        (graph, first.iter().filter(|&&f| f).count())
+    }
+
     /// Keeps the samples `keep` says, with the edges between them.
     pub fn retain(&mut self, keep: &[bool]) {
         let mut new_index = vec![u32::MAX; self.samples.len()];

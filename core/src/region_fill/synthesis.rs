@@ -7,13 +7,13 @@ use glam::DVec2;
 use rayon::prelude::*;
 
 use crate::control::Control;
-use crate::geom::Rect;
+use crate::geom::{Rect, closest_on_segment};
 use crate::random::SplitMix64;
 
 use super::assignment::{MatchedPair, assign_edges, assign_positions, existence_votes, missing_samples};
 use super::{
-    CurvePath, FillError, LEVELS, NearestField, NeighbourhoodPair, Neighbourhoods, SampleGraph, SampleGrid,
-    SearchSettings, Settings, Similarity, search,
+    CurvePath, FillError, JOIN_TOLERANCE_MM, LEVELS, NearestField, NeighbourhoodPair, Neighbourhoods, SampleGraph,
+    SampleGrid, SearchSettings, Settings, Similarity, search,
 };
 
 /// Patches (section 4.3.2): the rectangle `size_mm` is tiled with squares
@@ -23,14 +23,20 @@ use super::{
 /// the search starts from there rather than at random.
 fn initialize(
     input: &SampleGraph,
+    pinned: SampleGraph,
     size_mm: DVec2,
     patch_mm: f64,
     delta_mm: f64,
     rng: &mut SplitMix64,
 ) -> (SampleGraph, NearestField) {
     let (low, high) = bounds(input);
-    let mut output = SampleGraph::default();
+    // Patches go around what is already drawn; its samples start the search at random.
     let mut sources = NearestField::default();
+    for _ in 0..pinned.samples.len() {
+        sources.input_of.push((rng.next_unit() * input.samples.len() as f64) as u32 % input.samples.len() as u32);
+        sources.cost.push(f64::MAX);
+    }
+    let mut output = pinned;
     let grid_of = |g: &SampleGraph| SampleGrid::new(g, delta_mm);
     let (nx, ny) = ((size_mm.x / patch_mm).ceil() as usize, (size_mm.y / patch_mm).ceil() as usize);
     for j in 0..ny {
@@ -90,7 +96,40 @@ pub fn synthesize(
     settings: &Settings,
     control: &Control,
 ) -> Result<Vec<CurvePath>, FillError> {
+    synthesize_around(exemplar, bounds, &[], settings, control)
+}
+
+/// As [`synthesize`], around paths already drawn (`fixed`, mm): their
+/// samples take part in every neighbourhood but never move, vanish or lose
+/// an edge, so the texture grows out of them and joins them (the paper's
+/// autocomplete, section 4.2: samples of what the person drew are always
+/// matched). Returns the new paths only; one that continues a fixed path
+/// ends exactly on it.
+///
+/// ```no_run
+/// use tracery_core::DVec2;
+/// use tracery_core::geom::Rect;
+/// use tracery_core::control::Control;
+/// use tracery_core::region_fill::{CurvePath, Settings, builtin_curves, synthesize_around};
+/// let drawn = CurvePath { points_mm: vec![DVec2::new(5.0, 20.0), DVec2::new(35.0, 20.0)], closed: false };
+/// let bounds = Rect::new(DVec2::ZERO, DVec2::new(40.0, 40.0));
+/// let exemplar = builtin_curves("waves").unwrap();
+/// let new = synthesize_around(&exemplar, &bounds, &[drawn], &Settings::default(), &Control::default()).unwrap();
+/// assert!(!new.is_empty());
+/// ```
+pub fn synthesize_around(
+    exemplar: &[CurvePath],
+    bounds: &Rect,
+    fixed: &[CurvePath],
+    settings: &Settings,
+    control: &Control,
+) -> Result<Vec<CurvePath>, FillError> {
     let size = bounds.size();
+    let offset = bounds.min;
+    let fixed: Vec<CurvePath> = fixed
+        .iter()
+        .map(|p| CurvePath { points_mm: p.points_mm.iter().map(|q| *q - offset).collect(), closed: p.closed })
+        .collect();
     let mut rng = SplitMix64::new(settings.seed);
     let mut paths: Option<Vec<CurvePath>> = None;
     let steps = (LEVELS * settings.iterations) as f32;
@@ -98,31 +137,65 @@ pub fn synthesize(
         let delta = settings.delta_mm * 2f64.powi((LEVELS - 1 - level) as i32);
         let radius = settings.radius_spacings * delta;
         let input = SampleGraph::new(exemplar, delta)?;
-        let (output, start) = match &paths {
+        let (output, start, pinned) = match &paths {
             None => {
-                let (output, sources) = initialize(&input, size, 2.0 * radius, delta, &mut rng);
-                (output, Some(sources))
+                let pinned = SampleGraph::new(&fixed, delta)?;
+                let count = pinned.samples.len();
+                let (output, sources) = initialize(&input, pinned, size, 2.0 * radius, delta, &mut rng);
+                (output, Some(sources), count)
             }
-            Some(p) => (SampleGraph::new(p, delta)?, None),
+            Some(p) => {
+                let all: Vec<CurvePath> = p.iter().chain(&fixed).cloned().collect();
+                let graph = SampleGraph::new(&all, delta)?;
+                let on_fixed = on_paths(&graph, &fixed, JOIN_TOLERANCE_MM);
+                let (graph, pinned) = graph.pinned_first(&on_fixed);
+                (graph, None, pinned)
+            }
         };
         let at = Level {
             size_mm: size,
             delta_mm: delta,
             radius_mm: radius,
             iterations: settings.iterations,
+            pinned,
             control,
             done: (level * settings.iterations) as f32,
             steps,
         };
-        let output = synthesize_level(&input, output, start, &at, &mut rng)?;
+        let mut output = synthesize_level(&input, output, start, &at, &mut rng)?;
+        // What was drawn is added back whole at the next level: only the new
+        // paths (and their edges onto what was drawn) are carried.
+        output.disconnect_among(pinned);
         paths = Some(output.to_paths());
     }
-    let offset = bounds.min;
     Ok(paths
         .unwrap_or_default()
         .into_iter()
         .map(|p| CurvePath { points_mm: p.points_mm.iter().map(|q| *q + offset).collect(), ..p })
         .collect())
+}
+
+/// Which samples of `graph` lie within `tolerance_mm` of one of `paths`.
+fn on_paths(graph: &SampleGraph, paths: &[CurvePath], tolerance_mm: f64) -> Vec<bool> {
+    let boxes: Vec<Option<Rect>> =
+        paths.iter().map(|p| Rect::from_points(p.points_mm.iter().copied()).map(|b| b.inflate(tolerance_mm))).collect();
+    graph
+        .samples
+        .iter()
+        .map(|s| {
+            let p = s.position_mm;
+            paths.iter().zip(&boxes).any(|(path, b)| {
+                b.is_some_and(|b| p.cmpge(b.min).all() && p.cmple(b.max).all()) && {
+                    let n = path.points_mm.len();
+                    let segments = if path.closed { n } else { n.saturating_sub(1) };
+                    (0..segments).any(|k| {
+                        let (a, c) = (path.points_mm[k], path.points_mm[(k + 1) % n]);
+                        closest_on_segment(p, a, c).1.distance(p) <= tolerance_mm
+                    })
+                }
+            })
+        })
+        .collect()
 }
 
 /// One level of the synthesis: its area, spacing and radius, and its
@@ -132,6 +205,8 @@ struct Level<'a, 'c> {
     delta_mm: f64,
     radius_mm: f64,
     iterations: usize,
+    /// Samples `0..pinned` were drawn by the person: they stay as they are.
+    pinned: usize,
     control: &'a Control<'c>,
     /// Steps done before this level.
     done: f32,
@@ -183,13 +258,17 @@ fn synthesize_level(
                 MatchedPair { centre_o: o as u32, members_o, centre_i, members_i, matching }
             })
             .collect();
-        assign_positions(&mut output, input, &pairs, &project);
+        assign_positions(&mut output, input, &pairs, level.pinned, &project);
         let inside = |p: DVec2| p.cmpge(DVec2::ZERO).all() && p.cmple(size_mm).all();
         let added = missing_samples(&output, input, &pairs, delta_mm, radius_mm, &inside);
-        assign_edges(&mut output, input, &pairs);
+        assign_edges(&mut output, input, &pairs, level.pinned);
         // Existence: samples matched in fewer than half the neighbourhoods
         // holding them go, with their place in the field.
-        let keep: Vec<bool> = existence_votes(output.samples.len(), &pairs).iter().map(|&i| i >= 0.5).collect();
+        let keep: Vec<bool> = existence_votes(output.samples.len(), &pairs)
+            .iter()
+            .enumerate()
+            .map(|(s, &i)| s < level.pinned || i >= 0.5)
+            .collect();
         let mut kept = found;
         kept.retain(&keep);
         output.retain(&keep);
