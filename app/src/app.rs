@@ -64,6 +64,14 @@ pub struct TraceryApp {
     pub(crate) shade_worker: Worker<ShadeJob>,
     /// The object made of them and the model (one slot, [`ASSEMBLY`]).
     pub(crate) assembly_worker: Worker<AssemblyJob>,
+    /// Autocomplete's and clone's suggested paths (one slot, [`crate::predictions::PREDICTION_ID`]).
+    pub(crate) predictor: Worker<crate::predictions::PredictJob>,
+    /// The predictions on screen, if any.
+    pub(crate) predictions: Option<crate::predictions::Predictions>,
+    /// Where the canvas was last laid out, on screen.
+    pub(crate) canvas_rect: Option<egui::Rect>,
+    /// The clone tool's source rectangle, mm, once dragged.
+    pub(crate) clone_source: Option<tracery_core::geom::Rect>,
     /// What the stroke being drawn shares between its jobs.
     pub(crate) live_session: Session,
     pub(crate) gesture: Option<Gesture>,
@@ -108,6 +116,10 @@ impl TraceryApp {
             surface_worker: Worker::default(),
             shade_worker: Worker::default(),
             assembly_worker: Worker::default(),
+            predictor: Worker::default(),
+            predictions: None,
+            clone_source: None,
+            canvas_rect: None,
             live_session: Session::default(),
             gesture: None,
             dialogs,
@@ -118,6 +130,12 @@ impl TraceryApp {
             waker_set: false,
             gpu_format: None,
         }
+    }
+
+    /// The canvas's view and where it was last laid out on screen (for
+    /// tests that click on what they see).
+    pub fn canvas_view(&self) -> Option<(crate::canvas::View, egui::Rect)> {
+        self.canvas_rect.map(|rect| (self.state.view, rect))
     }
 
     /// The caches (for showing a mode's settings on their own, as the snapshot tests do).
@@ -151,6 +169,8 @@ impl TraceryApp {
     /// Adds a drawn curve with the settings the controls show, and selects it.
     pub fn add_curve(&mut self, points: Vec<DVec2>, closed: bool) {
         let mode = self.settings().for_new_curve();
+        // A region's outline is a loop however it was drawn.
+        let closed = closed || (mode.always_closed() && points.len() >= 3);
         let id = self.doc.add_curve(points, closed, mode);
         self.selected = Some(id);
     }
@@ -161,6 +181,7 @@ impl TraceryApp {
         self.doc.curves.iter().any(|c| self.worker.is_stale(c.id))
             || self.gallery_curve().is_some_and(|id| self.gallery.is_stale(id))
             || self.model_stale()
+            || (self.predictions.is_some() && self.predictor.is_stale(crate::predictions::PREDICTION_ID))
     }
 
     /// Whether a curve or shade on the model, or the object made of them,
@@ -298,6 +319,7 @@ impl TraceryApp {
             self.surface_worker.set_waker(wake.clone());
             self.assembly_worker.set_waker(wake.clone());
             self.shade_worker.set_waker(wake.clone());
+            self.predictor.set_waker(wake.clone());
             self.live.set_waker(wake);
             self.waker_set = true;
         }
@@ -319,6 +341,7 @@ impl TraceryApp {
             }
         }
         self.submit_live(now);
+        let predicting = self.submit_predictions(now);
         let surface_busy = self.submit_surface_jobs(now);
         let ids: Vec<u64> = self.doc.curves.iter().map(|c| c.id).collect();
         self.worker.retain(&ids);
@@ -326,9 +349,22 @@ impl TraceryApp {
         self.gallery.retain(&Vec::from_iter(gallery_curve));
         let gallery_busy = self.gallery.poll(now);
         let live_busy = self.live.poll(now);
-        if self.worker.poll(now) || gallery_busy || live_busy || surface_busy {
+        if self.worker.poll(now) || gallery_busy || live_busy || surface_busy || predicting {
             ctx.request_repaint_after(BUSY_REPAINT);
         }
+    }
+
+    /// Asks for the predictions on screen, forgetting them when their fill
+    /// is gone; returns whether they are being made.
+    fn submit_predictions(&mut self, now: Instant) -> bool {
+        if self.predictions.as_ref().is_some_and(|p| self.doc.curve(p.fill).is_none()) {
+            self.predictions = None;
+        }
+        match &self.predictions {
+            Some(p) => self.predictor.want(crate::predictions::PREDICTION_ID, p.job.clone(), now),
+            None => self.predictor.retain(&[]),
+        }
+        self.predictor.poll(now)
     }
 
     /// Asks for the patterns of the curves on the model; returns whether any is being made.

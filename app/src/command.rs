@@ -17,6 +17,8 @@ const SAVE: &[KeyboardShortcut] = &[cmd(Key::S)];
 const EXPORT_STL: &[KeyboardShortcut] = &[cmd(Key::E)];
 const DELETE: &[KeyboardShortcut] = &[plain(Key::Delete), plain(Key::Backspace)];
 const DESELECT: &[KeyboardShortcut] = &[plain(Key::Escape)];
+const ACCEPT: &[KeyboardShortcut] = &[plain(Key::Enter)];
+const ACCEPT_PICKED: &[KeyboardShortcut] = &[plain(Key::A)];
 
 /// A command.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
@@ -53,11 +55,17 @@ pub enum Command {
     AnotherOne,
     /// Forget every area painted with the avoidance brush.
     ClearAvoided,
+    /// Make every predicted path a pen stroke.
+    AcceptPredictions,
+    /// Make the predicted paths clicked a pen stroke each, and forget the rest.
+    AcceptPicked,
+    /// Forget the predicted paths (Escape does too).
+    RejectPredictions,
 }
 
 impl Command {
     /// Every command, in menu order.
-    pub const ALL: [Command; 16] = [
+    pub const ALL: [Command; 19] = [
         Command::Undo,
         Command::Redo,
         Command::Open,
@@ -74,6 +82,9 @@ impl Command {
         Command::Deselect,
         Command::AnotherOne,
         Command::ClearAvoided,
+        Command::AcceptPredictions,
+        Command::AcceptPicked,
+        Command::RejectPredictions,
     ];
 
     /// The words on its button.
@@ -95,6 +106,9 @@ impl Command {
             Command::Deselect => "Deselect",
             Command::AnotherOne => "Another one",
             Command::ClearAvoided => "Clear avoided areas",
+            Command::AcceptPredictions => "Accept all",
+            Command::AcceptPicked => "Accept picked",
+            Command::RejectPredictions => "Reject",
         }
     }
 
@@ -108,6 +122,8 @@ impl Command {
             Command::ExportStl => EXPORT_STL,
             Command::Delete => DELETE,
             Command::Deselect => DESELECT,
+            Command::AcceptPredictions => ACCEPT,
+            Command::AcceptPicked => ACCEPT_PICKED,
             Command::SaveAs
             | Command::ImportSvg
             | Command::ImportPng
@@ -116,7 +132,9 @@ impl Command {
             | Command::Export3mf
             | Command::ExportSvg
             | Command::QuickExport
-            | Command::AnotherOne => &[],
+            | Command::AnotherOne
+            // Escape rejects predictions through Deselect, which must see the key first.
+            | Command::RejectPredictions => &[],
         }
     }
 

@@ -80,6 +80,11 @@ pub fn run(app: &mut TraceryApp, command: Command) {
         }
         Command::QuickExport => app.quick_export(),
         Command::Delete => app.delete_selected(),
+        // Escape takes back predictions first.
+        Command::Deselect if app.predictions.is_some() => app.reject_predictions(),
+        Command::AcceptPredictions => app.accept_predictions(false),
+        Command::AcceptPicked => app.accept_predictions(true),
+        Command::RejectPredictions => app.reject_predictions(),
         Command::Deselect => match app.state.workspace {
             Workspace::Canvas => app.selected = None,
             Workspace::Model => app.selected_surface = None,
@@ -193,10 +198,10 @@ impl TraceryApp {
                 self.history.record(before);
                 self.history_handled = true;
                 let settings = self.settings_mut();
-                if std::mem::discriminant(settings) == std::mem::discriminant(&fresh) {
-                    *settings.exemplar_mut() = r.clone();
-                } else {
-                    *settings = fresh;
+                let same_mode = std::mem::discriminant(settings) == std::mem::discriminant(&fresh);
+                match settings.exemplar_mut() {
+                    Some(exemplar) if same_mode => *exemplar = r.clone(),
+                    _ => *settings = fresh,
                 }
                 self.message = Some((format!("Imported '{}'", r.name()), false));
             }

@@ -16,6 +16,7 @@ pub mod live;
 pub mod model;
 pub mod modes;
 pub mod panels;
+pub mod predictions;
 pub mod solutions;
 pub mod state;
 pub mod tools;

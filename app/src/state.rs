@@ -144,6 +144,7 @@ pub struct Caches {
     /// Smoothing runs when a curve changes, not on every frame.
     smoothed: HashMap<u64, Smoothed>,
     raster_exemplars: HashMap<ExemplarRef, Arc<RasterExemplar>>,
+    curve_exemplars: HashMap<ExemplarRef, Arc<tracery_core::region_fill::CurveExemplar>>,
     /// Pictures uploaded to the GPU, by the address of their pixels (kept
     /// alive here, so an address is not reused while its entry exists).
     textures: HashMap<usize, (Arc<[u8]>, egui::TextureHandle)>,
@@ -199,6 +200,15 @@ impl Caches {
     /// The raster exemplar a reference names, loaded once.
     pub fn raster_exemplar(&mut self, doc: &Document, r: &ExemplarRef) -> Result<Arc<RasterExemplar>, DocumentError> {
         load_once(&mut self.raster_exemplars, r, || doc.raster_exemplar(r))
+    }
+
+    /// The curve exemplar a reference names, loaded once.
+    pub fn curve_exemplar(
+        &mut self,
+        doc: &Document,
+        r: &ExemplarRef,
+    ) -> Result<Arc<tracery_core::region_fill::CurveExemplar>, DocumentError> {
+        load_once(&mut self.curve_exemplars, r, || doc.curve_exemplar(r))
     }
 
     /// `texture` uploaded for drawing, once for as long as something holds it.
@@ -259,6 +269,7 @@ impl Caches {
         self.models.retain(|r, _| matches!(r, BaseRef::Builtin(_)));
         self.exemplars.retain(|r, _| matches!(r, ExemplarRef::Builtin(_)));
         self.raster_exemplars.retain(|r, _| matches!(r, ExemplarRef::Builtin(_)));
+        self.curve_exemplars.retain(|r, _| matches!(r, ExemplarRef::Builtin(_)));
         self.pictures.retain(|(r, _), _| matches!(r, ExemplarRef::Builtin(_)));
     }
 

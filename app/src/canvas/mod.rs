@@ -13,6 +13,7 @@ pub use view::{MAX_POINTS_PER_MM, MIN_POINTS_PER_MM, View};
 
 use egui::{Color32, PointerButton, Sense, Stroke};
 use tracery_core::DVec2;
+use tracery_core::geom::Rect;
 
 use crate::TraceryApp;
 use crate::modes;
@@ -27,6 +28,15 @@ const SELECT_RADIUS_POINTS: f64 = 6.0;
 
 /// Areas painted with the avoidance brush.
 pub const AVOIDED: Color32 = Color32::from_rgba_premultiplied(110, 20, 20, 60);
+
+/// The clone tool's source rectangle.
+pub const CLONE_SOURCE: Color32 = Color32::from_rgb(220, 60, 60);
+/// Where predictions go.
+pub const PREDICTION_WINDOW: Color32 = Color32::from_rgb(230, 190, 40);
+/// Predicted paths, ghosted.
+pub const GHOST: Color32 = Color32::from_rgba_premultiplied(40, 110, 230, 110);
+/// Predicted paths picked for "accept picked".
+pub const PICKED: Color32 = Color32::from_rgb(240, 130, 20);
 
 /// The selected curve's colour.
 pub const SELECTION: Color32 = Color32::from_rgb(40, 140, 255);
@@ -51,6 +61,7 @@ pub fn canvas_ui(app: &mut TraceryApp, ui: &mut egui::Ui) {
     app.caches.refresh_smoothed(&app.doc.curves);
     let (response, painter) = ui.allocate_painter(ui.available_size(), Sense::click_and_drag());
     let rect = response.rect;
+    app.canvas_rect = Some(rect);
     let dark = ui.visuals().dark_mode;
     painter.rect_filled(rect, 0.0, if dark { Color32::from_gray(24) } else { Color32::from_gray(250) });
     grid_ui(&painter, rect, &app.state.view, dark);
@@ -69,7 +80,16 @@ pub fn canvas_ui(app: &mut TraceryApp, ui: &mut egui::Ui) {
     if response.clicked()
         && let Some(p) = response.interact_pointer_pos().map(|p| view.from_screen(rect, p))
     {
-        if app.state.tool == Tool::Ring {
+        let tolerance_mm = PICK_RADIUS_POINTS / f64::from(view.points_per_mm);
+        if app.pick_prediction_at(p, tolerance_mm) {
+            // A click on a predicted path picks it for "accept picked".
+        } else if app.state.tool == Tool::Clone {
+            // With a source, a click places a target of its size there.
+            if let Some(source) = app.clone_source {
+                let half = 0.5 * source.size();
+                app.clone_region(&source, &Rect::new(p - half, p + half));
+            }
+        } else if app.state.tool == Tool::Ring {
             app.add_jump_ring_at(p);
         } else if app.state.tool == Tool::Avoid {
             app.doc.avoid.push(painted(&draw::Stroke::begin(p), app.state.avoid_width_mm));
@@ -113,6 +133,8 @@ fn handle_gestures(app: &mut TraceryApp, ui: &egui::Ui, response: &egui::Respons
             // The ring tool acts on clicks only.
             Tool::Ring => None,
             Tool::Avoid => Some(Gesture::Avoid(draw::Stroke::begin(p))),
+            Tool::Pen => Some(Gesture::Pen(draw::Stroke::begin(p))),
+            Tool::Clone => Some(Gesture::Clone(p, p)),
             Tool::Edit => {
                 let found =
                     EditDrag::begin(&app.doc, app.selected, p, tolerance_mm, |q| curve_at(app, q, tolerance_mm));
@@ -126,7 +148,12 @@ fn handle_gestures(app: &mut TraceryApp, ui: &egui::Ui, response: &egui::Respons
     if response.dragged() {
         match &mut app.gesture {
             Some(Gesture::Pan(pan)) => pan.drag(&mut app.state.view, response.drag_delta()),
-            Some(Gesture::Stroke(stroke) | Gesture::Avoid(stroke)) => {
+            Some(Gesture::Clone(_, to)) => {
+                if let Some(p) = pointer.map(world) {
+                    *to = p;
+                }
+            }
+            Some(Gesture::Stroke(stroke) | Gesture::Avoid(stroke) | Gesture::Pen(stroke)) => {
                 if let Some(p) = pointer.map(world) {
                     stroke.extend(p);
                 }
@@ -147,6 +174,22 @@ fn handle_gestures(app: &mut TraceryApp, ui: &egui::Ui, response: &egui::Respons
                 }
             }
             Some(Gesture::Avoid(stroke)) => app.doc.avoid.push(painted(&stroke, app.state.avoid_width_mm)),
+            Some(Gesture::Pen(stroke)) => {
+                if let Some((points, closed)) = stroke.finish_every(view.points_per_mm, draw::PEN_SPACING_MM) {
+                    app.add_pen_stroke(points, closed);
+                }
+            }
+            Some(Gesture::Clone(from, to)) => {
+                let dragged = Rect::from_points([from, to]).filter(|r| r.width() > 1.0 && r.height() > 1.0);
+                match (dragged, app.clone_source) {
+                    (Some(rect), None) => {
+                        app.clone_source = Some(rect);
+                        app.message = Some(("Now drag or click where the copy goes".into(), false));
+                    }
+                    (Some(rect), Some(source)) => app.clone_region(&source, &rect),
+                    (None, _) => {}
+                }
+            }
             _ => {}
         }
         app.gesture = None;
@@ -188,7 +231,7 @@ fn paint_document(app: &mut TraceryApp, ui: &egui::Ui, painter: &egui::Painter, 
         if let Some(curve) = app.caches.smoothed(item.id) {
             let color = if selected { SELECTION } else { SELECTION.gamma_multiply(0.43) };
             let width = if selected { 2.0 } else { 1.0 };
-            painter.add(polyline(&view, rect, curve.points(), false, Stroke::new(width, color)));
+            painter.add(polyline(&view, rect, curve.points(), curve.is_closed(), Stroke::new(width, color)));
         }
         if selected && app.state.tool == Tool::Edit {
             for p in item.control_points() {
@@ -204,6 +247,19 @@ fn paint_document(app: &mut TraceryApp, ui: &egui::Ui, painter: &egui::Painter, 
         }
         painter.add(egui::Shape::line(points, Stroke::new(width, AVOIDED)));
     }
+    predictions_ui(app, painter, rect);
+    if let Some(Gesture::Pen(stroke)) = &app.gesture {
+        painter.add(polyline(&view, rect, &stroke.points, false, Stroke::new(2.0, ink)));
+    }
+    if let Some(Gesture::Clone(from, to)) = app.gesture {
+        let color = if app.clone_source.is_none() { CLONE_SOURCE } else { PREDICTION_WINDOW };
+        painter.rect_stroke(
+            egui::Rect::from_two_pos(view.to_screen(rect, from), view.to_screen(rect, to)),
+            0.0,
+            Stroke::new(1.5, color),
+            egui::StrokeKind::Middle,
+        );
+    }
     if let Some(Gesture::Stroke(stroke)) = &app.gesture {
         if let Some(product) = app.live_output() {
             painter.add(fill(&view, rect, &product.fill_mm, ink.gamma_multiply(0.8)));
@@ -217,4 +273,29 @@ fn paint_document(app: &mut TraceryApp, ui: &egui::Ui, painter: &egui::Painter, 
         egui::FontId::proportional(11.0),
         ui.visuals().weak_text_color(),
     );
+}
+
+/// The predictions, ghosted (picked ones in orange), the window they fill,
+/// and the clone tool's source.
+fn predictions_ui(app: &TraceryApp, painter: &egui::Painter, rect: egui::Rect) {
+    let view = app.state.view;
+    if let Some(source) = app.clone_source.filter(|_| app.state.tool == Tool::Clone) {
+        paint_rect_mm(painter, &view, rect, &source, CLONE_SOURCE);
+    }
+    let Some(predictions) = &app.predictions else { return };
+    for ring in predictions.job.window.rings() {
+        let stroke = Stroke::new(1.0, PREDICTION_WINDOW);
+        painter.add(polyline(&view, rect, ring, true, stroke));
+    }
+    let Some(paths) = app.predicted() else { return };
+    let width = (predictions.job.settings.stroke_width_mm as f32 * view.points_per_mm).max(1.5);
+    for (k, path) in paths.iter().enumerate() {
+        let color = if predictions.picked.contains(&k) { PICKED } else { GHOST };
+        painter.add(polyline(&view, rect, &path.points_mm, path.closed, Stroke::new(width, color)));
+    }
+}
+
+/// A rectangle given in mm, outlined.
+fn paint_rect_mm(painter: &egui::Painter, view: &View, rect: egui::Rect, r: &Rect, color: Color32) {
+    painter.add(polyline(view, rect, &r.corners(), true, Stroke::new(1.5, color)));
 }

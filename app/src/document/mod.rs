@@ -3,11 +3,13 @@
 //! exemplars are embedded so a project opens anywhere. Files written before
 //! versioning (format 0) are read by [`legacy`] and converted.
 
+mod fill;
 mod history;
 pub mod legacy;
 mod model;
 mod raster;
 
+pub use fill::{DEFAULT_CURVE_EXEMPLAR, PenItem, RegionFillItem};
 pub use history::History;
 pub use model::{BaseRef, ImportedModel, ModelScene, ShadeItem, SurfaceCurveItem};
 pub use raster::{AvoidStroke, DEFAULT_RASTER_EXEMPLAR, ImportedRaster, RasterBrushItem, avoided_region};
@@ -66,6 +68,10 @@ pub enum ModeSettings {
     VectorBrush(VectorBrushItem),
     /// Bitmap exemplars laid along the curve.
     RasterBrush(RasterBrushItem),
+    /// The inside of the closed curve filled with a curve texture.
+    RegionFill(RegionFillItem),
+    /// The curve drawn with a round pen.
+    Pen(PenItem),
 }
 
 impl From<VectorBrushItem> for ModeSettings {
@@ -77,6 +83,12 @@ impl From<VectorBrushItem> for ModeSettings {
 impl From<RasterBrushItem> for ModeSettings {
     fn from(item: RasterBrushItem) -> Self {
         ModeSettings::RasterBrush(item)
+    }
+}
+
+impl From<RegionFillItem> for ModeSettings {
+    fn from(item: RegionFillItem) -> Self {
+        ModeSettings::RegionFill(item)
     }
 }
 
@@ -92,7 +104,15 @@ impl ModeSettings {
         match self {
             ModeSettings::VectorBrush(v) => v.settings.band_mm,
             ModeSettings::RasterBrush(r) => r.settings.band_mm,
+            // A fill is picked by its outline.
+            ModeSettings::RegionFill(_) => 0.0,
+            ModeSettings::Pen(p) => p.width_mm,
         }
+    }
+
+    /// Whether a curve of this mode is always a loop (a region's outline).
+    pub fn always_closed(&self) -> bool {
+        matches!(self, ModeSettings::RegionFill(_))
     }
 
     /// A copy for a newly drawn curve: the same choices, the best pattern.
@@ -103,16 +123,18 @@ impl ModeSettings {
                 v.settings.seed = 0;
                 v.settings.alternative = 0;
             }
-            ModeSettings::RasterBrush(_) => {}
+            ModeSettings::RasterBrush(_) | ModeSettings::RegionFill(_) | ModeSettings::Pen(_) => {}
         }
         out
     }
 
-    /// The exemplar the mode draws with.
-    pub fn exemplar_mut(&mut self) -> &mut ExemplarRef {
+    /// The exemplar the mode draws with, if it has one.
+    pub fn exemplar_mut(&mut self) -> Option<&mut ExemplarRef> {
         match self {
-            ModeSettings::VectorBrush(v) => &mut v.exemplar,
-            ModeSettings::RasterBrush(r) => &mut r.exemplar,
+            ModeSettings::VectorBrush(v) => Some(&mut v.exemplar),
+            ModeSettings::RasterBrush(r) => Some(&mut r.exemplar),
+            ModeSettings::RegionFill(f) => Some(&mut f.exemplar),
+            ModeSettings::Pen(_) => None,
         }
     }
 
@@ -122,6 +144,8 @@ impl ModeSettings {
             ModeSettings::VectorBrush(_) => true,
             // One result: the search is exact.
             ModeSettings::RasterBrush(_) => false,
+            // One result per seed.
+            ModeSettings::RegionFill(_) | ModeSettings::Pen(_) => false,
         }
     }
 
@@ -129,8 +153,8 @@ impl ModeSettings {
     pub fn alternative(&self) -> u32 {
         match self {
             ModeSettings::VectorBrush(v) => v.settings.alternative,
-            // The raster brush has one result.
-            ModeSettings::RasterBrush(_) => 0,
+            // These modes have one result.
+            ModeSettings::RasterBrush(_) | ModeSettings::RegionFill(_) | ModeSettings::Pen(_) => 0,
         }
     }
 
@@ -138,7 +162,7 @@ impl ModeSettings {
     pub fn set_alternative(&mut self, k: u32) {
         match self {
             ModeSettings::VectorBrush(v) => v.settings.alternative = k,
-            ModeSettings::RasterBrush(_) => {}
+            ModeSettings::RasterBrush(_) | ModeSettings::RegionFill(_) | ModeSettings::Pen(_) => {}
         }
     }
 }

@@ -2,7 +2,9 @@
 //! settings UI, its overlays and the job it hands the worker), and the
 //! registry of them. Each mode lives in its own file and knows no other.
 
+pub mod pen;
 pub mod raster_brush;
+pub mod region_fill;
 pub mod vector_brush;
 
 use std::sync::Arc;
@@ -110,7 +112,8 @@ pub fn same<T: PartialEq + ?Sized>(a: &Arc<T>, b: &Arc<T>) -> bool {
 }
 
 /// Every mode, in picker order.
-pub static REGISTRY: &[&dyn ModeUi] = &[&vector_brush::VectorBrushUi, &raster_brush::RasterBrushUi];
+pub static REGISTRY: &[&dyn ModeUi] =
+    &[&vector_brush::VectorBrushUi, &raster_brush::RasterBrushUi, &region_fill::RegionFillUi, &pen::PenUi];
 
 /// The mode that owns `settings`.
 pub fn mode_ui(settings: &ModeSettings) -> &'static dyn ModeUi {
@@ -125,6 +128,10 @@ pub enum ModeJob {
     VectorBrush(vector_brush::VectorBrushJob),
     /// The raster brush along a curve.
     RasterBrush(raster_brush::RasterBrushJob),
+    /// A region filled inside a closed curve.
+    RegionFill(region_fill::RegionFillJob),
+    /// A pen stroke.
+    Pen(pen::PenJob),
 }
 
 /// Why a job failed.
@@ -137,6 +144,9 @@ pub enum JobError {
     /// The raster brush failed.
     #[error(transparent)]
     RasterBrush(#[from] tracery_core::raster_brush::RasterError),
+    /// The region could not be filled, or the pen stroke drawn.
+    #[error(transparent)]
+    RegionFill(#[from] tracery_core::region_fill::FillError),
     /// The jump rings could not be added.
     #[error(transparent)]
     JumpRing(#[from] JumpRingError),
@@ -147,6 +157,7 @@ impl MaybeCancelled for JobError {
         match self {
             JobError::VectorBrush(e) => e.is_cancelled(),
             JobError::RasterBrush(e) => e.is_cancelled(),
+            JobError::RegionFill(e) => e.is_cancelled(),
             JobError::JumpRing(_) => false,
         }
     }
@@ -158,6 +169,8 @@ impl ModeJob {
         match self {
             ModeJob::VectorBrush(job) => Ok(job.run(control)?),
             ModeJob::RasterBrush(job) => Ok(job.run(control)?),
+            ModeJob::RegionFill(job) => Ok(job.run(control)?),
+            ModeJob::Pen(job) => Ok(job.run()?),
         }
     }
 
@@ -166,8 +179,8 @@ impl ModeJob {
     pub fn alternatives(&self, control: &Control) -> Result<Vec<Product>, JobError> {
         match self {
             ModeJob::VectorBrush(job) => Ok(job.alternatives(control)?),
-            // One result (the app asks no gallery of it; see `ModeSettings::has_alternatives`).
-            ModeJob::RasterBrush(job) => Ok(vec![job.run(control)?]),
+            // One result (the app asks no gallery of these; see `ModeSettings::has_alternatives`).
+            ModeJob::RasterBrush(_) | ModeJob::RegionFill(_) | ModeJob::Pen(_) => Ok(vec![self.run(control)?]),
         }
     }
 
@@ -176,7 +189,7 @@ impl ModeJob {
     pub fn best(&self) -> ModeJob {
         match self {
             ModeJob::VectorBrush(job) => ModeJob::VectorBrush(job.best()),
-            ModeJob::RasterBrush(_) => self.clone(),
+            ModeJob::RasterBrush(_) | ModeJob::RegionFill(_) | ModeJob::Pen(_) => self.clone(),
         }
     }
 }

@@ -3,12 +3,14 @@
 use egui::RichText;
 
 use crate::TraceryApp;
+use crate::command::Command;
 use crate::modes::{ModeEnv, REGISTRY, mode_ui};
+use crate::predictions::PredictionKind;
 use crate::tools::Tool;
 
 /// The side panel.
 pub fn side_panel_ui(app: &mut TraceryApp, ui: &mut egui::Ui) {
-    ui.horizontal(|ui| {
+    ui.horizontal_wrapped(|ui| {
         for tool in Tool::ALL {
             ui.selectable_value(&mut app.state.tool, tool, tool.label());
         }
@@ -17,6 +19,29 @@ pub fn side_panel_ui(app: &mut TraceryApp, ui: &mut egui::Ui) {
         ui.add(egui::Slider::new(&mut app.state.avoid_width_mm, 1.0..=40.0).text("Brush width (mm)"))
             .on_hover_text("Paint areas that raster patterns leave empty; undo takes a stroke back");
     }
+    match app.state.tool {
+        Tool::Pen => {
+            ui.label(
+                RichText::new(
+                    "Draw in a region fill; with Fill automatically off, autocomplete continues your strokes.",
+                )
+                .weak(),
+            );
+        }
+        Tool::Clone => {
+            let step = if app.clone_source.is_none() {
+                "Drag the source rectangle in a region fill."
+            } else {
+                "Drag or click where the copy goes."
+            };
+            ui.label(RichText::new(step).weak());
+            if app.clone_source.is_some() && ui.button("New source").clicked() {
+                app.clone_source = None;
+            }
+        }
+        _ => {}
+    }
+    predictions_ui(app, ui);
     ui.separator();
     let editing = match app.selected {
         Some(id) => format!("Curve {id}"),
@@ -52,4 +77,42 @@ pub fn side_panel_ui(app: &mut TraceryApp, ui: &mut egui::Ui) {
     super::printer::printer_ui(app, ui);
     ui.separator();
     super::files::files_ui(app, ui);
+}
+
+/// The predictions waiting for an answer: how many, and accept or reject.
+fn predictions_ui(app: &mut TraceryApp, ui: &mut egui::Ui) {
+    let Some(predictions) = &app.predictions else { return };
+    let what = match predictions.kind {
+        PredictionKind::Autocomplete => "Autocomplete",
+        PredictionKind::Clone => "Clone",
+    };
+    let picked = predictions.picked.len();
+    ui.separator();
+    ui.label(RichText::new(what).strong());
+    let ready = app.predicted().map(|p| p.len());
+    match (ready, app.predictor.state(crate::predictions::PREDICTION_ID)) {
+        (Some(n), _) => {
+            ui.label(format!("{n} suggested path(s), {picked} picked; click a path to pick it"));
+        }
+        (None, Some(crate::worker::JobState::Done(Err(e)))) => {
+            ui.colored_label(ui.visuals().error_fg_color, e.to_string());
+        }
+        _ => {
+            ui.horizontal(|ui| {
+                ui.spinner();
+                ui.label("Suggesting…");
+            });
+        }
+    }
+    ui.horizontal(|ui| {
+        if Command::AcceptPredictions.button(ui, ready.is_some()) {
+            app.queue(Command::AcceptPredictions);
+        }
+        if Command::AcceptPicked.button(ui, ready.is_some() && picked > 0) {
+            app.queue(Command::AcceptPicked);
+        }
+        if ui.button(Command::RejectPredictions.label()).on_hover_text("Esc").clicked() {
+            app.queue(Command::RejectPredictions);
+        }
+    });
 }

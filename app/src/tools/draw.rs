@@ -8,6 +8,9 @@ use tracery_core::curve::Curve;
 pub const MIN_SAMPLE_SPACING_MM: f64 = 0.25;
 /// Spacing of the control points a finished stroke keeps, mm.
 pub const CONTROL_SPACING_MM: f64 = 6.0;
+/// Spacing of a pen stroke's control points, mm: pen strokes are details
+/// of a fill (a spiral's turns), not a band's path.
+pub const PEN_SPACING_MM: f64 = 1.5;
 /// A stroke whose end comes back within this many screen points of its start closes.
 pub const CLOSE_DISTANCE_POINTS: f64 = 20.0;
 
@@ -34,8 +37,13 @@ impl Stroke {
     /// The button was released: the control points and whether the curve
     /// closes, or `None` for a stroke too short to keep.
     pub fn finish(&self, points_per_mm: f32) -> Option<(Vec<DVec2>, bool)> {
+        self.finish_every(points_per_mm, CONTROL_SPACING_MM)
+    }
+
+    /// As [`Stroke::finish`], with control points about every `spacing_mm`.
+    pub fn finish_every(&self, points_per_mm: f32, spacing_mm: f64) -> Option<(Vec<DVec2>, bool)> {
         let close_mm = CLOSE_DISTANCE_POINTS / f64::from(points_per_mm);
-        stroke_to_control_points(&self.points, CONTROL_SPACING_MM, close_mm)
+        stroke_to_control_points(&self.points, spacing_mm, close_mm)
     }
 }
 

@@ -22,11 +22,15 @@ pub enum Tool {
     Ring,
     /// Paint areas that raster patterns leave empty.
     Avoid,
+    /// Draw pen strokes; in a region fill, autocomplete continues them.
+    Pen,
+    /// Drag a source rectangle in a region fill, then a target to clone it to.
+    Clone,
 }
 
 impl Tool {
     /// Every tool, in toolbar order.
-    pub const ALL: [Tool; 5] = [Tool::Draw, Tool::Edit, Tool::Pan, Tool::Ring, Tool::Avoid];
+    pub const ALL: [Tool; 7] = [Tool::Draw, Tool::Edit, Tool::Pan, Tool::Ring, Tool::Avoid, Tool::Pen, Tool::Clone];
 
     /// Its name on the toolbar.
     pub fn label(self) -> &'static str {
@@ -36,6 +40,8 @@ impl Tool {
             Tool::Pan => "Pan",
             Tool::Ring => "Ring",
             Tool::Avoid => "Avoid",
+            Tool::Pen => "Pen",
+            Tool::Clone => "Clone",
         }
     }
 }
@@ -51,4 +57,8 @@ pub enum Gesture {
     Pan(pan::Pan),
     /// An area being painted with the avoidance brush.
     Avoid(draw::Stroke),
+    /// A pen stroke being drawn.
+    Pen(draw::Stroke),
+    /// A clone rectangle being dragged, from corner to corner, mm.
+    Clone(tracery_core::DVec2, tracery_core::DVec2),
 }

@@ -33,7 +33,7 @@ pub use neighbourhood::{
     EDGE_WEIGHT, EdgeVectors, NeighbourhoodPair, SampleGrid, Similarity, edge_difference, edge_vectors,
     neighbourhood_distance, unmatched_cost,
 };
-pub use pipeline::{make_product, make_product_around, predict};
+pub use pipeline::{make_product, make_product_around, predict, print_drawn};
 pub use reconstruct::{CORNER_TURN, SMOOTH_TOLERANCE_MM, smooth_paths};
 pub use region::{MAX_FILL_SAMPLES, REGION_TOLERANCE_MM, check_region, parse_region, region_from_outlines};
 pub use sample_graph::{JOIN_TOLERANCE_MM, MAX_SEGMENTS, Sample, SampleError, SampleGraph, SampleKind};

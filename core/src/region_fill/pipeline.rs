@@ -59,11 +59,49 @@ pub fn make_product_around(
 ) -> Result<Product, FillError> {
     let mut timings = Timings::default();
     let paths = predict_timed(exemplar, region, drawn, settings, control, &mut timings)?;
+    finish(paths, region, drawn, settings, control, timings)
+}
+
+/// What prints of the paths a person `drawn` in `region` (mm) alone, with
+/// the frame: a fill not filled automatically.
+///
+/// ```
+/// use tracery_core::DVec2;
+/// use tracery_core::control::Control;
+/// use tracery_core::region_fill::{CurvePath, Settings, parse_region, print_drawn};
+/// let drawn = CurvePath { points_mm: vec![DVec2::new(5.0, 20.0), DVec2::new(35.0, 20.0)], closed: false };
+/// let product = print_drawn(&parse_region("rect:40x40").unwrap(), &[drawn], &Settings::default(), &Control::default()).unwrap();
+/// assert_eq!(product.topology.components, 1);
+/// ```
+pub fn print_drawn(
+    region: &Region,
+    drawn: &[CurvePath],
+    settings: &Settings,
+    control: &Control,
+) -> Result<Product, FillError> {
+    settings.validate()?;
+    if region.is_empty() {
+        return Err(FillError::EmptyRegion);
+    }
+    finish(Vec::new(), region, drawn, settings, control, Timings::default())
+}
+
+/// The product of new `paths` and `drawn` ones in `region`.
+fn finish(
+    paths: Vec<CurvePath>,
+    region: &Region,
+    drawn: &[CurvePath],
+    settings: &Settings,
+    control: &Control,
+    mut timings: Timings,
+) -> Result<Product, FillError> {
     let printed: Vec<CurvePath> = paths.iter().chain(&clip_paths(drawn, region, 0.0)).cloned().collect();
     let (print, bridges) = timings.time("strokes", || print_region(&printed, region, settings));
     control.check()?;
     let topology = count_topology(&print);
-    let mesh = timings.time("mesh", || extrude(&print, settings.thickness_mm))?;
+    // Nothing drawn yet in a fill that is not filled automatically prints nothing.
+    let mesh =
+        if print.is_empty() { None } else { Some(timings.time("mesh", || extrude(&print, settings.thickness_mm))?) };
     let mut facts = Facts::default();
     facts.push("paths", Fact::Count(paths.len()));
     facts.push("length_mm", Fact::Number(paths.iter().map(CurvePath::length_mm).sum()));
@@ -76,7 +114,7 @@ pub fn make_product_around(
     let mut product = Product {
         fill_mm: fill_triangles(&print),
         paths_mm: stroked_paths(paths, region, settings),
-        mesh_mm: Some(mesh),
+        mesh_mm: mesh,
         topology: crate::geom::PatternTopology {
             components: topology.components,
             holes: topology.holes,

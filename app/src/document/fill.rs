@@ -1,0 +1,76 @@
+//! What region fill adds to a document: a fill is a closed curve whose
+//! inside is filled with a curve texture, and a pen stroke is a plain line
+//! of a chosen width; pen strokes inside a fill are what the person drew
+//! there, which the fill grows around (and which autocomplete and clone
+//! continue).
+
+use serde::{Deserialize, Serialize};
+use tracery_core::region_fill::{self, BUILTIN_CURVES, CurveExemplar};
+
+use super::{Document, DocumentError, ExemplarRef};
+
+/// The curve exemplar a new fill starts with.
+pub const DEFAULT_CURVE_EXEMPLAR: &str = "spirals";
+
+/// A region fill's choices: its curve exemplar, the mode's settings, and
+/// whether the whole region fills by itself.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(default)]
+pub struct RegionFillItem {
+    /// The curve exemplar (a built-in, see `tracery list --curves`).
+    pub exemplar: ExemplarRef,
+    /// The settings, the same struct `tracery fill` uses.
+    pub settings: region_fill::Settings,
+    /// Whether the whole region is filled around the pen strokes in it; off,
+    /// only the strokes print, and autocomplete suggests more as they are drawn.
+    pub fill_automatically: bool,
+}
+
+impl Default for RegionFillItem {
+    fn default() -> Self {
+        RegionFillItem {
+            exemplar: ExemplarRef::Builtin(DEFAULT_CURVE_EXEMPLAR.into()),
+            settings: region_fill::Settings::default(),
+            fill_automatically: true,
+        }
+    }
+}
+
+/// A pen stroke: the curve drawn with a round pen, as it prints.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(default)]
+pub struct PenItem {
+    /// The pen's width, mm.
+    pub width_mm: f64,
+    /// The printed thickness, mm.
+    pub thickness_mm: f64,
+}
+
+impl Default for PenItem {
+    fn default() -> Self {
+        let fill = region_fill::Settings::default();
+        PenItem { width_mm: fill.stroke_width_mm, thickness_mm: fill.thickness_mm }
+    }
+}
+
+impl Document {
+    /// Loads the curve exemplar a fill refers to: a built-in, or an
+    /// imported SVG read for its strokes and shapes.
+    pub fn curve_exemplar(&self, r: &ExemplarRef) -> Result<CurveExemplar, DocumentError> {
+        match r {
+            ExemplarRef::Builtin(name) => CurveExemplar::builtin(name).ok_or_else(|| {
+                let known = BUILTIN_CURVES.join(", ");
+                DocumentError::Exemplar(format!("there is no built-in curve exemplar '{name}' (known: {known})"))
+            }),
+            ExemplarRef::Imported(name) => {
+                let imported = self
+                    .imported
+                    .iter()
+                    .find(|e| &e.name == name)
+                    .ok_or_else(|| DocumentError::MissingExemplar(name.clone()))?;
+                CurveExemplar::from_svg_data(name.clone(), imported.svg.as_bytes())
+                    .map_err(|e| DocumentError::Exemplar(e.to_string()))
+            }
+        }
+    }
+}

@@ -1,0 +1,195 @@
+//! Region fill in the desktop app, driven as a person would: pick the mode,
+//! draw an outline, draw pen strokes in it, take or refuse autocomplete's
+//! and clone's suggestions with the mouse and keys, undo, export.
+
+use egui::{Key, Modifiers, Pos2};
+use egui_kittest::kittest::Queryable;
+use tracery::dialogs::FileKind;
+use tracery::document::ModeSettings;
+use tracery_core::DVec2;
+
+#[path = "common/cli.rs"]
+mod cli;
+#[path = "common/drive.rs"]
+mod drive;
+use cli::tempdir;
+#[path = "common/stl.rs"]
+mod stl;
+#[path = "common/ui.rs"]
+mod ui;
+use drive::{circle, click_in_side_panel, drag, harness};
+use stl::check_stl;
+use ui::settle;
+
+type App = egui_kittest::Harness<'static, tracery::TraceryApp>;
+
+/// The canvas's centre on screen, where the view's origin is.
+const CENTRE: Pos2 = Pos2::new(775.0, 410.0);
+
+fn pens(harness: &App) -> usize {
+    harness.state().doc.curves.iter().filter(|c| matches!(c.mode, ModeSettings::Pen(_))).count()
+}
+
+/// A wavy pen stroke across the fill, screen points.
+fn stroke(from: Pos2, length: f32) -> Vec<Pos2> {
+    (0..=30)
+        .map(|k| {
+            let t = k as f32 / 30.0;
+            from + egui::vec2(length * t, 12.0 * (t * std::f32::consts::TAU).sin())
+        })
+        .collect()
+}
+
+/// Whether `p` is inside the closed polyline `ring` (even-odd), written here apart from the geometry code.
+fn inside(ring: &[DVec2], p: DVec2) -> bool {
+    let mut crossings = 0;
+    for (k, a) in ring.iter().enumerate() {
+        let b = ring[(k + 1) % ring.len()];
+        if (a.y > p.y) != (b.y > p.y) && p.x < a.x + (p.y - a.y) / (b.y - a.y) * (b.x - a.x) {
+            crossings += 1;
+        }
+    }
+    crossings % 2 == 1
+}
+
+/// Draws a region fill's outline and waits for it; returns the fill's id.
+fn draw_fill(harness: &mut App) -> u64 {
+    harness.get_by_label("Mode").click();
+    harness.run_steps(2);
+    harness.get_by_label("Region fill").click();
+    harness.run_steps(2);
+    assert!(matches!(harness.state().settings(), ModeSettings::RegionFill(_)));
+    drag(harness, &circle(CENTRE, 110.0));
+    settle(harness);
+    let fill = &harness.state().doc.curves[0];
+    assert!(fill.closed, "a region's outline is a loop");
+    fill.id
+}
+
+/// Steps until the predictions are made; returns them.
+fn wait_for_predictions(harness: &mut App) -> Vec<Vec<DVec2>> {
+    settle(harness);
+    let paths = harness.state().predicted().expect("predictions on screen");
+    paths.iter().map(|p| p.points_mm.clone()).collect()
+}
+
+#[test]
+fn a_drawn_region_fills_and_prints_as_one_sound_solid() {
+    let dir = tempdir("app-fill");
+    let mut harness = harness(vec![(FileKind::ExportStl, dir.join("fill.stl"))]);
+    harness.step();
+    let id = draw_fill(&mut harness);
+    let product = harness.state().output(id).expect("a fill").clone();
+    assert!(product.paths_mm.len() > 5, "the region is filled with paths");
+    let outline = harness.state().doc.curve(id).unwrap().control_points();
+    // Every path point is inside the outline drawn (its control polygon, with a 2 mm allowance for smoothing).
+    let bounds_r = outline.iter().map(|p| p.length()).fold(0.0, f64::max);
+    for p in product.paths_mm.iter().flat_map(|p| &p.points_mm) {
+        assert!(p.length() <= bounds_r + 2.0, "a path leaves the region at {p:?}");
+    }
+    harness.key_press_modifiers(Modifiers::COMMAND, Key::E);
+    harness.run_steps(2);
+    let stl = check_stl(&dir.join("fill.stl"));
+    assert_eq!(stl.shells, product.topology.components, "the STL's bodies are the fill's components");
+}
+
+#[test]
+fn autocomplete_suggests_paths_that_are_accepted_picked_or_refused() {
+    let mut harness = harness(Vec::new());
+    harness.step();
+    let fill = draw_fill(&mut harness);
+    click_in_side_panel(&mut harness, "Fill automatically");
+    settle(&mut harness);
+    let ModeSettings::RegionFill(item) = &harness.state().doc.curve(fill).unwrap().mode else { panic!("not a fill") };
+    assert!(!item.fill_automatically);
+    harness.get_by_label("Pen").click();
+    harness.step();
+
+    // A stroke: suggestions appear around it, inside the fill.
+    drag(&mut harness, &stroke(CENTRE + egui::vec2(-60.0, 20.0), 120.0));
+    assert_eq!(pens(&harness), 1);
+    let outline = harness.state().doc.curve(fill).unwrap().control_points();
+    let suggested = wait_for_predictions(&mut harness);
+    assert!(!suggested.is_empty(), "autocomplete suggests paths");
+    for p in suggested.iter().flatten() {
+        // The control polygon lies just inside the smoothed outline; 1 mm of allowance.
+        let nearest_out = outline.iter().map(|q| q.distance(*p)).fold(f64::MAX, f64::min);
+        assert!(inside(&outline, *p) || nearest_out < 3.0, "a suggestion leaves the fill at {p:?}");
+    }
+    harness.get_by_label_contains("suggested path(s)");
+
+    // Escape refuses them: nothing is added.
+    harness.key_press(Key::Escape);
+    harness.run_steps(2);
+    assert!(harness.state().predicted().is_none());
+    assert_eq!(pens(&harness), 1);
+
+    // Another stroke; a click on one suggestion picks it, A accepts it alone.
+    drag(&mut harness, &stroke(CENTRE + egui::vec2(-60.0, -30.0), 120.0));
+    let suggested = wait_for_predictions(&mut harness);
+    let (view, rect) = harness.state().canvas_view().expect("the canvas is laid out");
+    let longest = suggested.iter().max_by(|a, b| a.len().cmp(&b.len())).unwrap();
+    let on_path = longest[longest.len() / 2];
+    harness.hover_at(view.to_screen(rect, on_path));
+    harness.step();
+    drive::press(&harness, view.to_screen(rect, on_path), true);
+    harness.step();
+    drive::press(&harness, view.to_screen(rect, on_path), false);
+    harness.run_steps(2);
+    harness.get_by_label_contains("1 picked");
+    harness.key_press(Key::A);
+    harness.run_steps(2);
+    assert_eq!(pens(&harness), 3, "two strokes drawn and one suggestion accepted");
+
+    // A third stroke; Enter accepts every suggestion, and undo takes them back at once.
+    drag(&mut harness, &stroke(CENTRE + egui::vec2(-40.0, 60.0), 80.0));
+    let suggested = wait_for_predictions(&mut harness);
+    harness.key_press(Key::Enter);
+    harness.run_steps(2);
+    let accepted = pens(&harness) - 4;
+    assert!(accepted >= 1 && accepted <= suggested.len());
+    harness.key_press_modifiers(Modifiers::COMMAND, Key::Z);
+    harness.run_steps(2);
+    assert_eq!(pens(&harness), 4, "undo takes the accepted suggestions back");
+    // Accepted strokes print with the fill: its solid holds them.
+    settle(&mut harness);
+    let product = harness.state().output(fill).expect("the fill's print").clone();
+    assert!(product.mesh_mm.is_some() && product.topology.components >= 1);
+}
+
+#[test]
+fn clone_copies_what_was_drawn_in_a_source_to_a_target() {
+    let mut harness = harness(Vec::new());
+    harness.step();
+    let fill = draw_fill(&mut harness);
+    click_in_side_panel(&mut harness, "Fill automatically");
+    harness.get_by_label("Pen").click();
+    harness.step();
+    for k in 0..4 {
+        drag(&mut harness, &stroke(CENTRE + egui::vec2(-90.0, -70.0 + 14.0 * k as f32), 70.0));
+        harness.key_press(Key::Escape);
+        harness.run_steps(2);
+    }
+    assert_eq!(pens(&harness), 4);
+    harness.get_by_label("Clone").click();
+    harness.step();
+    // The source around the strokes, then the target to their right.
+    drag(&mut harness, &[CENTRE + egui::vec2(-95.0, -85.0), CENTRE + egui::vec2(-15.0, -10.0)]);
+    assert!(harness.state().predicted().is_none());
+    drag(&mut harness, &[CENTRE + egui::vec2(5.0, -85.0), CENTRE + egui::vec2(85.0, -10.0)]);
+    let suggested = wait_for_predictions(&mut harness);
+    assert!(!suggested.is_empty(), "the clone suggests paths");
+    // They lie in the target.
+    let (view, rect) = harness.state().canvas_view().expect("the canvas is laid out");
+    let (left, right) = (
+        view.from_screen(rect, CENTRE + egui::vec2(5.0, 0.0)).x,
+        view.from_screen(rect, CENTRE + egui::vec2(85.0, 0.0)).x,
+    );
+    for p in suggested.iter().flatten() {
+        assert!(p.x > left - 0.1 && p.x < right + 0.1, "a cloned path outside the target at {p:?}");
+    }
+    harness.get_by_label("Accept all").click();
+    harness.run_steps(2);
+    assert!(pens(&harness) > 4);
+    assert!(harness.state().doc.curve(fill).is_some());
+}
