@@ -5,9 +5,19 @@
 //! continue).
 
 use serde::{Deserialize, Serialize};
+use tracery_core::DVec2;
+use tracery_core::geom::ring_contains;
 use tracery_core::region_fill::{self, BUILTIN_CURVES, CurveExemplar};
 
 use super::{Document, DocumentError, ExemplarRef};
+
+/// Whether a pen stroke (its smoothed points, mm) lies in the region inside
+/// `outline` (a fill's smoothed outline): most of its points do. The fill
+/// gathers its strokes and each stroke finds its fill by this one test.
+pub fn inside(outline: &[DVec2], points: &[DVec2]) -> bool {
+    let count = points.iter().filter(|&&p| ring_contains(outline, p)).count();
+    2 * count > points.len()
+}
 
 /// The curve exemplar a new fill starts with.
 pub const DEFAULT_CURVE_EXEMPLAR: &str = "spirals";

@@ -9,7 +9,7 @@ pub mod legacy;
 mod model;
 mod raster;
 
-pub use fill::{DEFAULT_CURVE_EXEMPLAR, PenItem, RegionFillItem};
+pub use fill::{DEFAULT_CURVE_EXEMPLAR, PenItem, RegionFillItem, inside};
 pub use history::History;
 pub use model::{BaseRef, ImportedModel, ModelScene, ShadeItem, SurfaceCurveItem};
 pub use raster::{AvoidStroke, DEFAULT_RASTER_EXEMPLAR, ImportedRaster, RasterBrushItem, avoided_region};

@@ -112,7 +112,7 @@ impl ModeUi for PenUi {
             matches!(c.mode, ModeSettings::RegionFill(_))
                 && caches
                     .smoothed(c.id)
-                    .is_some_and(|outline| super::region_fill::inside(outline.points(), curve.points()))
+                    .is_some_and(|outline| crate::document::inside(outline.points(), curve.points()))
         });
         Ok(ModeJob::Pen(PenJob { curve: curve.clone(), pen: pen.clone(), in_fill }))
     }

@@ -9,7 +9,7 @@ use tracery_core::DVec2;
 use tracery_core::Product;
 use tracery_core::control::Control;
 use tracery_core::curve::Curve;
-use tracery_core::geom::{Rect, Region, ring_contains};
+use tracery_core::geom::{Rect, Region};
 use tracery_core::region_fill::{
     BUILTIN_CURVES, CurveExemplar, CurvePath, FillError, Settings, make_product_around, print_drawn,
     region_from_outlines,
@@ -17,7 +17,7 @@ use tracery_core::region_fill::{
 
 use super::{ModeEnv, ModeJob, ModeUi, same};
 use crate::canvas::{View, polyline};
-use crate::document::{Document, DocumentError, ExemplarRef, ModeSettings, RegionFillItem};
+use crate::document::{Document, DocumentError, ExemplarRef, ModeSettings, RegionFillItem, inside};
 use crate::panels::exemplar_picker::thumbnail_grid_ui;
 use crate::state::Caches;
 
@@ -67,14 +67,6 @@ impl RegionFillJob {
             print_drawn(&region, &self.drawn, &self.settings, control)
         }
     }
-}
-
-/// Whether a pen stroke (its smoothed points, mm) lies in the region inside
-/// `outline` (a fill's smoothed outline): most of its points do. The fill
-/// gathers its strokes and each stroke finds its fill by this one test.
-pub fn inside(outline: &[DVec2], points: &[DVec2]) -> bool {
-    let count = points.iter().filter(|&&p| ring_contains(outline, p)).count();
-    2 * count > points.len()
 }
 
 /// The pen strokes drawn in the fill with smoothed outline `outline`, as smoothed paths, mm.
