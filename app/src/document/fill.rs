@@ -73,11 +73,7 @@ impl Document {
                 DocumentError::Exemplar(format!("there is no built-in curve exemplar '{name}' (known: {known})"))
             }),
             ExemplarRef::Imported(name) => {
-                let imported = self
-                    .imported
-                    .iter()
-                    .find(|e| &e.name == name)
-                    .ok_or_else(|| DocumentError::MissingExemplar(name.clone()))?;
+                let imported = self.imported_svg(name)?;
                 CurveExemplar::from_svg_data(name.clone(), imported.svg.as_bytes())
                     .map_err(|e| DocumentError::Exemplar(e.to_string()))
             }

@@ -341,16 +341,17 @@ impl Document {
         self.curves.iter_mut().find(|c| c.id == id)
     }
 
+    /// The imported SVG exemplar named `name`.
+    pub fn imported_svg(&self, name: &str) -> Result<&ImportedExemplar, DocumentError> {
+        self.imported.iter().find(|e| e.name == name).ok_or_else(|| DocumentError::MissingExemplar(name.to_string()))
+    }
+
     /// Loads the exemplar a curve refers to.
     pub fn exemplar(&self, r: &ExemplarRef) -> Result<Exemplar, DocumentError> {
         match r {
             ExemplarRef::Builtin(name) => builtin(name).map_err(|e| DocumentError::Exemplar(e.to_string())),
             ExemplarRef::Imported(name) => {
-                let imported = self
-                    .imported
-                    .iter()
-                    .find(|e| &e.name == name)
-                    .ok_or_else(|| DocumentError::MissingExemplar(name.clone()))?;
+                let imported = self.imported_svg(name)?;
                 Exemplar::from_svg_str(name.clone(), &imported.svg, &LoadOptions::default())
                     .map_err(|e| DocumentError::Exemplar(e.to_string()))
             }

@@ -87,17 +87,6 @@ impl ModeUi for PenUi {
         );
     }
 
-    fn overlays_ui(
-        &self,
-        _painter: &egui::Painter,
-        _view: &crate::canvas::View,
-        _rect: egui::Rect,
-        _product: &Product,
-        _toggles: super::OverlayToggles,
-    ) {
-        // A pen stroke has no band nor seams.
-    }
-
     fn job(
         &self,
         curve: &Arc<Curve>,

@@ -140,17 +140,6 @@ impl ModeUi for RegionFillUi {
         });
     }
 
-    fn overlays_ui(
-        &self,
-        _painter: &egui::Painter,
-        _view: &View,
-        _rect: egui::Rect,
-        _product: &Product,
-        _toggles: super::OverlayToggles,
-    ) {
-        // A fill has no band nor seams; its outline is drawn as every curve's.
-    }
-
     fn job(
         &self,
         curve: &Arc<Curve>,
