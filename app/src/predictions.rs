@@ -12,7 +12,7 @@ use std::sync::Arc;
 
 use tracery_core::DVec2;
 use tracery_core::control::Control;
-use tracery_core::geom::{Polygon, Rect, Region, clip_polylines, intersection};
+use tracery_core::geom::{Rect, Region, clip_polylines, intersection};
 use tracery_core::region_fill::{CurveExemplar, CurvePath, FillError, Settings, predict};
 
 use crate::document::{ModeSettings, PenItem, RegionFillItem};
@@ -84,11 +84,6 @@ pub struct Predictions {
     pub picked: Vec<usize>,
 }
 
-/// A rectangle as a region.
-pub fn rect_region(rect: &Rect) -> Region {
-    Region::new(vec![Polygon { outer: rect.corners().to_vec(), holes: Vec::new() }])
-}
-
 /// The fill with curve `id`, its settings and its region, or why not.
 fn fill_of(doc: &Document, caches: &Caches, id: u64) -> Result<(RegionFillItem, Region, Vec<CurvePath>), String> {
     let item = doc.curve(id).ok_or("the fill is gone")?;
@@ -153,7 +148,7 @@ impl TraceryApp {
                 None => self.caches.curve_exemplar(&self.doc, &fill.exemplar).map_err(|e| e.to_string())?,
                 Some(source) => {
                     let all: Vec<(Vec<DVec2>, bool)> = drawn.iter().map(|p| (p.points_mm.clone(), p.closed)).collect();
-                    let paths: Vec<CurvePath> = clip_polylines(&all, &rect_region(source))
+                    let paths: Vec<CurvePath> = clip_polylines(&all, &Region::rectangle(source))
                         .into_iter()
                         .map(|(points_mm, closed)| CurvePath { points_mm, closed })
                         .collect();
@@ -164,7 +159,7 @@ impl TraceryApp {
                     Arc::new(exemplar)
                 }
             };
-            let window = intersection(&rect_region(window), &region);
+            let window = intersection(&Region::rectangle(window), &region);
             let job =
                 PredictJob { exemplar, window: Arc::new(window), drawn: Arc::new(drawn), settings: fill.settings };
             Ok::<_, String>(Predictions { fill: id, kind, job, picked: Vec::new() })

@@ -10,7 +10,7 @@
 use tiny_skia::{Color, Paint, PathBuilder, Pixmap, Stroke, Transform};
 use tracery_core::DVec2;
 use tracery_core::control::Control;
-use tracery_core::geom::{Polygon, Rect, Region, clip_polylines};
+use tracery_core::geom::{Rect, Region, clip_polylines};
 use tracery_core::region_fill::{BUILTIN_CURVES, CurveExemplar, CurvePath, Settings, predict};
 
 /// Pixels per millimetre.
@@ -40,24 +40,19 @@ fn draw(sheet: &mut Pixmap, paths: &[CurvePath], origin_px: (f32, f32), rgb: (u8
     }
 }
 
-fn rect_region(rect: Rect) -> Region {
-    let ring = vec![rect.min, DVec2::new(rect.max.x, rect.min.y), rect.max, DVec2::new(rect.min.x, rect.max.y)];
-    Region::new(vec![Polygon { outer: ring, holes: Vec::new() }])
-}
-
 fn main() {
     let out = std::env::args().nth(1).unwrap_or_else(|| "docs/fill-autocomplete.png".into());
     let side = (WINDOW_MM as f32 + 4.0) * SCALE;
     let mut sheet = Pixmap::new((side * BUILTIN_CURVES.len() as f32) as u32, side as u32).expect("a sheet");
     sheet.fill(Color::WHITE);
-    let window = rect_region(Rect::new(DVec2::ZERO, DVec2::splat(WINDOW_MM)));
+    let window = Region::rectangle(&Rect::new(DVec2::ZERO, DVec2::splat(WINDOW_MM)));
     for (k, name) in BUILTIN_CURVES.iter().enumerate() {
         let exemplar = CurveExemplar::builtin(name).expect("a built-in curve exemplar");
         let low =
             Rect::from_points(exemplar.paths.iter().flat_map(|p| p.points_mm.iter().copied())).expect("bounds").min;
         let moved: Vec<(Vec<DVec2>, bool)> =
             exemplar.paths.iter().map(|p| (p.points_mm.iter().map(|q| *q - low).collect(), p.closed)).collect();
-        let strip = rect_region(Rect::new(DVec2::ZERO, DVec2::new(WINDOW_MM, STRIP_MM)));
+        let strip = Region::rectangle(&Rect::new(DVec2::ZERO, DVec2::new(WINDOW_MM, STRIP_MM)));
         let drawn: Vec<CurvePath> = clip_polylines(&moved, &strip)
             .into_iter()
             .map(|(points_mm, closed)| CurvePath { points_mm, closed })

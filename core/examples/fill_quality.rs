@@ -29,8 +29,7 @@ fn main() {
         let ex_paths: Vec<_> = exemplar.paths.iter().map(|p| (p.points_mm.clone(), p.closed)).collect();
         let ex_bounds = Rect::from_points(ex_paths.iter().flat_map(|p| p.0.iter().copied())).expect("points");
         let ex = curve_statistics_within(&ex_paths, &ex_bounds, margin);
-        let ex_region =
-            Region::new(vec![tracery_core::geom::Polygon { outer: ex_bounds.corners().to_vec(), holes: vec![] }]);
+        let ex_region = Region::rectangle(&ex_bounds);
         let ex_cover = coverage(&ex_paths, &ex_region, margin);
         let mut runs: Vec<(CurveStatistics, f64, f64)> = Vec::new();
         for seed in 1..=seeds {

@@ -322,7 +322,7 @@ fn a_bounded_comparison_gives_up_only_when_the_full_one_is_no_cheaper() {
 #[test]
 fn fills_look_like_their_exemplars_by_independent_measures() {
     use tracery_core::control::Control;
-    use tracery_core::geom::{Polygon, Rect, Region};
+    use tracery_core::geom::{Rect, Region};
     use tracery_core::quality::{
         CURVATURE_BIN, ORIENTATION_BINS, coverage, curve_statistics_within, histogram_emd, histogram_emd_circular,
     };
@@ -336,7 +336,7 @@ fn fills_look_like_their_exemplars_by_independent_measures() {
         let ex_paths: Vec<_> = exemplar.paths.iter().map(|p| (p.points_mm.clone(), p.closed)).collect();
         let ex_bounds = Rect::from_points(ex_paths.iter().flat_map(|p| p.0.iter().copied())).unwrap();
         let ex = curve_statistics_within(&ex_paths, &ex_bounds, margin);
-        let ex_region = Region::new(vec![Polygon { outer: ex_bounds.corners().to_vec(), holes: vec![] }]);
+        let ex_region = Region::rectangle(&ex_bounds);
         let product = make_product(&exemplar, &region, &settings, &Control::default()).unwrap();
         let paths: Vec<_> = product.paths_mm.iter().map(|p| (p.points_mm.clone(), p.closed)).collect();
         let out = curve_statistics_within(&paths, &bounds, margin);

@@ -5,16 +5,12 @@
 
 use tracery_core::DVec2;
 use tracery_core::control::Control;
-use tracery_core::geom::{Polygon, Rect, Region, clip_polylines};
+use tracery_core::geom::{Rect, Region, clip_polylines};
 use tracery_core::quality::{coverage, curve_statistics};
 use tracery_core::region_fill::{CurveExemplar, CurvePath, Settings, predict};
 
 const WINDOW_MM: f64 = 40.0;
 const STRIP_MM: f64 = 12.0;
-
-fn rect_region(rect: Rect) -> Region {
-    Region::new(vec![Polygon { outer: rect.corners().to_vec(), holes: vec![] }])
-}
 
 /// The exemplar's own paths in a strip across the bottom of the window:
 /// what a person drew in its style.
@@ -22,7 +18,7 @@ fn drawn_strip(exemplar: &CurveExemplar) -> Vec<CurvePath> {
     let low = Rect::from_points(exemplar.paths.iter().flat_map(|p| p.points_mm.iter().copied())).unwrap().min;
     let moved: Vec<(Vec<DVec2>, bool)> =
         exemplar.paths.iter().map(|p| (p.points_mm.iter().map(|q| *q - low).collect(), p.closed)).collect();
-    let strip = rect_region(Rect::new(DVec2::ZERO, DVec2::new(WINDOW_MM, STRIP_MM)));
+    let strip = Region::rectangle(&Rect::new(DVec2::ZERO, DVec2::new(WINDOW_MM, STRIP_MM)));
     clip_polylines(&moved, &strip)
         .into_iter()
         .map(|(points_mm, closed)| CurvePath { points_mm, closed })
@@ -37,8 +33,8 @@ fn as_pairs(paths: &[CurvePath]) -> Vec<(Vec<DVec2>, bool)> {
 #[test]
 fn predictions_continue_what_was_drawn_without_crossing_it() {
     let settings = Settings::default();
-    let window = rect_region(Rect::new(DVec2::ZERO, DVec2::splat(WINDOW_MM)));
-    let above = rect_region(Rect::new(DVec2::new(0.0, STRIP_MM), DVec2::splat(WINDOW_MM)));
+    let window = Region::rectangle(&Rect::new(DVec2::ZERO, DVec2::splat(WINDOW_MM)));
+    let above = Region::rectangle(&Rect::new(DVec2::new(0.0, STRIP_MM), DVec2::splat(WINDOW_MM)));
     for name in ["crackle", "meander", "vine", "scales"] {
         let exemplar = CurveExemplar::builtin(name).unwrap();
         let drawn = drawn_strip(&exemplar);
@@ -73,7 +69,7 @@ fn predictions_continue_what_was_drawn_without_crossing_it() {
         // strip 28 mm high is more edge than middle; the vine gives 0.79).
         let ex_bounds = Rect::from_points(exemplar.paths.iter().flat_map(|p| p.points_mm.iter().copied())).unwrap();
         let reach = settings.radius_mm();
-        let ex_cover = coverage(&as_pairs(&exemplar.paths), &rect_region(ex_bounds), reach);
+        let ex_cover = coverage(&as_pairs(&exemplar.paths), &Region::rectangle(&ex_bounds), reach);
         let cover = coverage(&as_pairs(&all), &above, reach);
         assert!(cover >= 0.75 * ex_cover, "{name}: covers {cover:.2} above the strokes, the exemplar {ex_cover:.2}");
     }
@@ -82,7 +78,7 @@ fn predictions_continue_what_was_drawn_without_crossing_it() {
 #[test]
 fn with_nothing_drawn_the_prediction_is_a_plain_fill() {
     let exemplar = CurveExemplar::builtin("waves").unwrap();
-    let window = rect_region(Rect::new(DVec2::ZERO, DVec2::splat(WINDOW_MM)));
+    let window = Region::rectangle(&Rect::new(DVec2::ZERO, DVec2::splat(WINDOW_MM)));
     let settings = Settings::default();
     let alone = predict(&exemplar, &window, &[], &settings, &Control::default()).unwrap();
     // Strokes far away are no context: the same paths as with nothing drawn.

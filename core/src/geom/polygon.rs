@@ -111,6 +111,18 @@ impl Region {
         Region { polygons }
     }
 
+    /// The rectangle `rect` as a region (counter-clockwise from its lower left).
+    ///
+    /// ```
+    /// use tracery_core::DVec2;
+    /// use tracery_core::geom::{Rect, Region};
+    /// let r = Region::rectangle(&Rect::new(DVec2::ZERO, DVec2::new(4.0, 3.0)));
+    /// assert!((r.area() - 12.0).abs() < 1e-12);
+    /// ```
+    pub fn rectangle(rect: &Rect) -> Region {
+        Region { polygons: vec![Polygon { outer: rect.corners().to_vec(), holes: Vec::new() }] }
+    }
+
     /// Whether the region has no polygon.
     pub fn is_empty(&self) -> bool {
         self.polygons.is_empty()

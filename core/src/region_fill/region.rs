@@ -7,7 +7,7 @@ use glam::DVec2;
 
 use super::{FillError, Settings};
 use crate::curve::svg_shapes;
-use crate::geom::{FillRule, Polygon, Region, arc_step, disc, offset, resolve_contours, ring_crossing};
+use crate::geom::{FillRule, Rect, Region, arc_step, disc, offset, resolve_contours, ring_crossing};
 
 /// Largest distance between a region's curved edges and their chords, mm.
 pub const REGION_TOLERANCE_MM: f64 = 0.01;
@@ -36,8 +36,7 @@ pub fn parse_region(spec: &str) -> Result<Region, FillError> {
         "rect" => {
             let (w, h) = rest.split_once(['x', 'X']).ok_or_else(bad)?;
             let (w, h) = (number(w)?, number(h)?);
-            let outer = vec![DVec2::ZERO, DVec2::new(w, 0.0), DVec2::new(w, h), DVec2::new(0.0, h)];
-            Ok(Region::new(vec![Polygon { outer, holes: Vec::new() }]))
+            Ok(Region::rectangle(&Rect::new(DVec2::ZERO, DVec2::new(w, h))))
         }
         "circle" => {
             let r = number(rest)?;
