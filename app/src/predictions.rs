@@ -187,7 +187,7 @@ impl TraceryApp {
         let nearest = paths
             .iter()
             .enumerate()
-            .map(|(k, path)| (k, crate::canvas::distance_to(&path.points_mm, path.closed, p)))
+            .map(|(k, path)| (k, path.distance_to(p)))
             .filter(|&(_, d)| d <= tolerance_mm)
             .min_by(|a, b| a.1.total_cmp(&b.1));
         let (Some((k, _)), Some(predictions)) = (nearest, self.predictions.as_mut()) else { return false };

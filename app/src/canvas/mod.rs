@@ -2,13 +2,13 @@
 //! the tools (see `tools/`) driving what a drag does.
 
 mod grid;
-mod hit;
 mod paint;
 mod view;
 
 pub use grid::grid_ui;
-pub use hit::distance_to;
 pub use paint::{fill, fill_fitted, polyline, shaded_region};
+/// Distance from a point to a polyline (hit testing).
+pub use tracery_core::geom::polyline_distance as distance_to;
 pub use view::{MAX_POINTS_PER_MM, MIN_POINTS_PER_MM, View};
 
 use egui::{Color32, PointerButton, Sense, Stroke};

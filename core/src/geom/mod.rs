@@ -32,7 +32,7 @@ pub use polyline::refine_mapped;
 pub use rect::Rect;
 pub use resolution::{mean_width, without_slivers};
 pub use sanity::{MIN_RING_AREA, RegionDefect};
-pub use segment::closest_on_segment;
+pub use segment::{closest_on_segment, polyline_distance};
 pub use specks::{MIN_PART_PX, remove_specks};
 pub use stroke::{STROKE_ARC_TOLERANCE_MM, brush_stroke};
 pub use topology::{PatternTopology, Topology, count_topology};

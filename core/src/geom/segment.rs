@@ -1,4 +1,4 @@
-//! The point of a segment nearest to a point.
+//! The point of a segment nearest to a point, and a point's distance to a polyline.
 
 use glam::DVec2;
 
@@ -21,4 +21,25 @@ pub fn closest_on_segment(p: DVec2, a: DVec2, b: DVec2) -> (f64, DVec2) {
     }
     let t = ((p - a).dot(ab) / len2).clamp(0.0, 1.0);
     (t, a + ab * t)
+}
+
+/// Distance from `p` to the polyline through `points` (closed: back to the
+/// first); infinite for no points.
+///
+/// ```
+/// use tracery_core::DVec2;
+/// use tracery_core::geom::polyline_distance;
+/// let l = [DVec2::ZERO, DVec2::new(4.0, 0.0), DVec2::new(4.0, 4.0)];
+/// assert_eq!(polyline_distance(&l, false, DVec2::new(1.0, 2.0)), 2.0);
+/// assert_eq!(polyline_distance(&l, true, DVec2::new(1.0, 2.0)), (0.5f64).sqrt());
+/// ```
+pub fn polyline_distance(points: &[DVec2], closed: bool, p: DVec2) -> f64 {
+    let n = points.len();
+    if n == 1 {
+        return points[0].distance(p);
+    }
+    let segments = if closed { n } else { n.saturating_sub(1) };
+    (0..segments)
+        .map(|i| p.distance(closest_on_segment(p, points[i], points[(i + 1) % n]).1))
+        .fold(f64::INFINITY, f64::min)
 }

@@ -12,6 +12,11 @@ pub struct CurvePath {
 }
 
 impl CurvePath {
+    /// Distance from `p` to the path, mm.
+    pub fn distance_to(&self, p: DVec2) -> f64 {
+        crate::geom::polyline_distance(&self.points_mm, self.closed, p)
+    }
+
     /// Straight pieces: one fewer than the points, or as many for a loop.
     ///
     /// ```

@@ -4,8 +4,8 @@
 
 use crate::control::Control;
 use crate::geom::{
-    Rect, Region, brush_stroke, clip_polylines, closest_on_segment, count_topology, difference, fill_triangles,
-    intersection, join_parts, offset, union,
+    Rect, Region, brush_stroke, clip_polylines, count_topology, difference, fill_triangles, intersection, join_parts,
+    offset, union,
 };
 use crate::mesh::extrude;
 use crate::product::{Fact, Facts, Product, StrokedPath};
@@ -181,15 +181,7 @@ fn predict_timed(
         let limits = FragmentLimits::learn(&learned?, radius, FRAGMENT_FALLBACK_SPACINGS * settings.delta_mm);
         let inner = bounds.inflate(-radius);
         // Ends near the edge go on past it, and ends on a drawn path join it: neither is loose.
-        let on_drawn = |p: DVec2| {
-            drawn.iter().any(|d| {
-                let n = d.points_mm.len();
-                let segments = if d.closed { n } else { n.saturating_sub(1) };
-                (0..segments).any(|k| {
-                    closest_on_segment(p, d.points_mm[k], d.points_mm[(k + 1) % n]).1.distance(p) <= JOIN_TOLERANCE_MM
-                })
-            })
-        };
+        let on_drawn = |p: DVec2| drawn.iter().any(|d| d.distance_to(p) <= JOIN_TOLERANCE_MM);
         let anchored = |p: DVec2| !(p.cmpgt(inner.min).all() && p.cmplt(inner.max).all()) || on_drawn(p);
         Ok::<_, FillError>(smooth_paths(&limits.remove_from(synthesized, anchored)))
     })?;

@@ -7,7 +7,7 @@ use glam::DVec2;
 use rayon::prelude::*;
 
 use crate::control::Control;
-use crate::geom::{Rect, closest_on_segment};
+use crate::geom::Rect;
 use crate::random::SplitMix64;
 
 use super::assignment::{MatchedPair, assign_edges, assign_positions, existence_votes, missing_samples};
@@ -185,14 +185,7 @@ fn on_paths(graph: &SampleGraph, paths: &[CurvePath], tolerance_mm: f64) -> Vec<
         .map(|s| {
             let p = s.position_mm;
             paths.iter().zip(&boxes).any(|(path, b)| {
-                b.is_some_and(|b| p.cmpge(b.min).all() && p.cmple(b.max).all()) && {
-                    let n = path.points_mm.len();
-                    let segments = if path.closed { n } else { n.saturating_sub(1) };
-                    (0..segments).any(|k| {
-                        let (a, c) = (path.points_mm[k], path.points_mm[(k + 1) % n]);
-                        closest_on_segment(p, a, c).1.distance(p) <= tolerance_mm
-                    })
-                }
+                b.is_some_and(|b| p.cmpge(b.min).all() && p.cmple(b.max).all()) && path.distance_to(p) <= tolerance_mm
             })
         })
         .collect()
