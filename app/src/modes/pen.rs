@@ -50,11 +50,7 @@ impl PenJob {
                 width_mm: self.pen.width_mm,
             }],
             mesh_mm,
-            topology: tracery_core::geom::PatternTopology {
-                components: topology.components,
-                holes: topology.holes,
-                ..Default::default()
-            },
+            topology: topology.into(),
             ..Product::default()
         };
         // Inside a fill, the fill's solid and outline hold this stroke.

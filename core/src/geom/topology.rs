@@ -49,3 +49,10 @@ pub struct PatternTopology {
     #[serde(default)]
     pub jump_rings: usize,
 }
+
+impl From<Topology> for PatternTopology {
+    /// A planar pattern's counts: no loop openings nor jump rings.
+    fn from(t: Topology) -> Self {
+        PatternTopology { components: t.components, holes: t.holes, ..Default::default() }
+    }
+}

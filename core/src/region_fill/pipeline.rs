@@ -115,11 +115,7 @@ fn finish(
         fill_mm: fill_triangles(&print),
         paths_mm: stroked_paths(paths, region, settings),
         mesh_mm: mesh,
-        topology: crate::geom::PatternTopology {
-            components: topology.components,
-            holes: topology.holes,
-            ..Default::default()
-        },
+        topology: topology.into(),
         timings,
         facts,
         ..Product::default()
