@@ -108,12 +108,11 @@ impl TraceryApp {
     /// in a fill not filled automatically, asks for autocomplete around it.
     pub fn add_pen_stroke(&mut self, points: Vec<DVec2>, closed: bool) {
         let fill = points.get(points.len() / 2).and_then(|&p| self.fill_at(p));
-        let mut pen = PenItem::default();
         let fill_item = fill.and_then(|id| self.doc.curve(id)).map(|c| c.mode.clone());
-        if let Some(ModeSettings::RegionFill(f)) = &fill_item {
-            pen.width_mm = f.settings.stroke_width_mm;
-            pen.thickness_mm = f.settings.thickness_mm;
-        }
+        let pen = match &fill_item {
+            Some(ModeSettings::RegionFill(f)) => PenItem::for_fill(&f.settings),
+            _ => PenItem::default(),
+        };
         let bounds = Rect::from_points(points.iter().copied());
         self.doc.add_curve(points, closed, ModeSettings::Pen(pen));
         // The fill stays selected, so its controls and the predictions stay in view.
@@ -207,10 +206,7 @@ impl TraceryApp {
             self.message = Some(("No predictions to accept yet".into(), true));
             return;
         };
-        let pen = PenItem {
-            width_mm: predictions.job.settings.stroke_width_mm,
-            thickness_mm: predictions.job.settings.thickness_mm,
-        };
+        let pen = PenItem::for_fill(&predictions.job.settings);
         let mut accepted = 0;
         for (k, path) in paths.iter().enumerate() {
             if picked_only && !predictions.picked.contains(&k) {

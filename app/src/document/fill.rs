@@ -56,10 +56,16 @@ pub struct PenItem {
     pub thickness_mm: f64,
 }
 
+impl PenItem {
+    /// A pen drawing like the strokes of a fill with `settings`.
+    pub fn for_fill(settings: &region_fill::Settings) -> PenItem {
+        PenItem { width_mm: settings.stroke_width_mm, thickness_mm: settings.thickness_mm }
+    }
+}
+
 impl Default for PenItem {
     fn default() -> Self {
-        let fill = region_fill::Settings::default();
-        PenItem { width_mm: fill.stroke_width_mm, thickness_mm: fill.thickness_mm }
+        PenItem::for_fill(&region_fill::Settings::default())
     }
 }
 
