@@ -4,7 +4,8 @@
 
 use glam::DVec2;
 use tracery_core::region_fill::{
-    BUILTIN_CURVES, CurvePath, JOIN_TOLERANCE_MM, SampleGraph, SampleKind, builtin_curves, hierarchy, robust_match,
+    BUILTIN_CURVES, CurvePath, JOIN_TOLERANCE_MM, SampleGraph, SampleGrid, SampleKind, builtin_curves, hierarchy,
+    robust_match,
 };
 
 /// The cheapest cost over every way of matching each output to a distinct
@@ -360,5 +361,24 @@ fn fills_look_like_their_exemplars_by_independent_measures() {
             cover >= 0.8 * ex_cover,
             "{name}: covers {cover:.2} of the region, the exemplar {ex_cover:.2} of its own"
         );
+    }
+}
+
+#[test]
+fn the_grids_nearest_sample_is_the_first_of_those_within_reach() {
+    // The crackle's samples, looked up from points in and around it, with
+    // reaches from under a cell to the whole exemplar: the ring-by-ring
+    // search must find what gathering and sorting finds.
+    let graph = SampleGraph::new(&builtin_curves("crackle").unwrap(), 1.5).unwrap();
+    let grid = SampleGrid::new(&graph, 4.6);
+    let mut state = 7u64;
+    let mut unit = || {
+        state = state.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407);
+        (state >> 11) as f64 / (1u64 << 53) as f64
+    };
+    for _ in 0..2000 {
+        let centre = DVec2::new(unit() * 60.0 - 10.0, unit() * 60.0 - 10.0);
+        let reach = 0.5 + unit() * 30.0;
+        assert_eq!(grid.nearest(&graph, centre, reach), grid.within(&graph, centre, reach).first().copied());
     }
 }

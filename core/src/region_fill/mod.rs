@@ -12,6 +12,7 @@ mod curve_path;
 mod error;
 mod exemplar;
 mod fragments;
+mod joins;
 mod matching;
 mod neighbourhood;
 mod pipeline;
@@ -28,12 +29,13 @@ pub use curve_path::CurvePath;
 pub use error::FillError;
 pub use exemplar::{CurveExemplar, EXEMPLAR_TOLERANCE_MM, MAX_EXEMPLAR_SAMPLES};
 pub use fragments::FragmentLimits;
+pub use joins::join_drawn_ends;
 pub use matching::{Matching, robust_match};
 pub use neighbourhood::{
     EDGE_WEIGHT, EdgeVectors, NeighbourhoodPair, SampleGrid, Similarity, edge_difference, edge_vectors,
     neighbourhood_distance, unmatched_cost,
 };
-pub use pipeline::{make_product, make_product_around, predict, print_drawn};
+pub use pipeline::{PREDICTION_ITERATIONS, make_product, make_product_around, predict, print_drawn};
 pub use reconstruct::{CORNER_TURN, SMOOTH_TOLERANCE_MM, smooth_paths};
 pub use region::{MAX_FILL_SAMPLES, REGION_TOLERANCE_MM, check_region, parse_region, region_from_outlines};
 pub use sample_graph::{JOIN_TOLERANCE_MM, MAX_SEGMENTS, Sample, SampleError, SampleGraph, SampleKind};

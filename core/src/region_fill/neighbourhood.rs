@@ -52,6 +52,36 @@ impl SampleGrid {
         found.sort_by(|a, b| a.0.total_cmp(&b.0).then(a.1.cmp(&b.1)));
         found.into_iter().map(|(_, s)| s).collect()
     }
+
+    /// The first of [`SampleGrid::within`], found ring of cells by ring
+    /// outward, without gathering and sorting the rest: the search asks
+    /// this for windows up to half the exemplar wide.
+    pub fn nearest(&self, graph: &SampleGraph, centre: DVec2, radius_mm: f64) -> Option<u32> {
+        let reach = (radius_mm / self.cell_mm).ceil() as i64;
+        let (cx, cy) = cell_of(centre, self.cell_mm);
+        let mut best: Option<(f64, u32)> = None;
+        for ring in 0..=reach {
+            // Points in ring `ring` lie more than `ring - 1` cells from the
+            // centre, which may sit anywhere in its own cell.
+            if best.is_some_and(|(d, _)| d <= (ring - 1) as f64 * self.cell_mm) {
+                break;
+            }
+            for dx in -ring..=ring {
+                for dy in -ring..=ring {
+                    if dx.abs() != ring && dy.abs() != ring {
+                        continue;
+                    }
+                    for &s in self.cells.get(&(cx + dx, cy + dy)).map_or(&[][..], |v| &v[..]) {
+                        let d = graph.samples[s as usize].position_mm.distance(centre);
+                        if d <= radius_mm && best.is_none_or(|b| (d, s) < b) {
+                            best = Some((d, s));
+                        }
+                    }
+                }
+            }
+        }
+        best.map(|(_, s)| s)
+    }
 }
 
 fn cell_of(p: DVec2, cell_mm: f64) -> (i64, i64) {
@@ -234,7 +264,7 @@ impl NeighbourhoodPair<'_> {
             self.members_i.iter().map(|&s| input.samples[s as usize].position_mm - centre_i).collect();
         let unmatched: SmallVec<[f64; 64]> =
             self.members_o.iter().map(|&s| unmatched_cost(output, s as usize, similarity.delta_mm)).collect();
-        let mut costs = vec![0.0; n * m];
+        let mut costs: SmallVec<[f64; 1024]> = smallvec::smallvec![0.0; n * m];
         let mut lower = 0.0;
         let mut row_least: SmallVec<[f64; 64]> = SmallVec::with_capacity(n);
         for (o, &so) in self.members_o.iter().enumerate() {

@@ -15,7 +15,7 @@ use glam::DVec2;
 
 use super::{
     CurveExemplar, CurvePath, FillError, FragmentLimits, JOIN_TOLERANCE_MM, SampleGraph, Settings, check_region,
-    smooth_paths, synthesize_around,
+    join_drawn_ends, smooth_paths, synthesize_around,
 };
 
 /// Paths left shorter than this many sample spacings by clipping are
@@ -124,10 +124,17 @@ fn finish(
     Ok(product)
 }
 
+/// Steps per level for predictions, at most: a suggestion must come while
+/// the person still looks at what they drew (within 250 ms for a 40 mm
+/// window), and starting from patches the synthesis has settled by then
+/// (`docs/region-fill.md` compares 5 and 7).
+pub const PREDICTION_ITERATIONS: usize = 5;
+
 /// New paths like `exemplar` in `region` (mm) that continue what was
 /// `drawn`: the autocomplete's predictions, and the clone's when the
 /// exemplar is the source region's paths. Synthesized over the region's
-/// bounds, cleared of stray fragments, smoothed and clipped to the region.
+/// bounds with at most [`PREDICTION_ITERATIONS`] steps per level, cleared
+/// of stray fragments, smoothed and clipped to the region.
 ///
 /// ```no_run
 /// use tracery_core::DVec2;
@@ -146,7 +153,8 @@ pub fn predict(
     settings: &Settings,
     control: &Control,
 ) -> Result<Vec<CurvePath>, FillError> {
-    predict_timed(exemplar, region, drawn, settings, control, &mut Timings::default())
+    let settings = Settings { iterations: settings.iterations.min(PREDICTION_ITERATIONS), ..settings.clone() };
+    predict_timed(exemplar, region, drawn, &settings, control, &mut Timings::default())
 }
 
 fn predict_timed(
@@ -168,8 +176,10 @@ fn predict_timed(
             .is_some_and(|b| b.max.cmpge(reach.min).all() && b.min.cmple(reach.max).all())
     };
     let drawn: Vec<CurvePath> = drawn.iter().filter(|p| near(p)).cloned().collect();
-    let synthesized =
+    let mut synthesized =
         timings.time("synthesis", || synthesize_around(&exemplar.paths, &bounds, &drawn, settings, control))?;
+    // A new path that stops just short of a drawn stroke's end continues it.
+    join_drawn_ends(&mut synthesized, &drawn, settings.delta_mm);
     control.check()?;
     let smooth = timings.time("reconstruction", || {
         let radius = settings.radius_mm();

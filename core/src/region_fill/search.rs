@@ -119,7 +119,7 @@ pub fn search(
         .fold((DVec2::MAX, DVec2::MIN), |(lo, hi), s| (lo.min(s.position_mm), hi.max(s.position_mm)));
     let input_size_mm = (high - low).max_element().max(settings.delta_mm);
     // The input sample nearest a point, if any lies within reach.
-    let nearest_input = |p: DVec2, reach_mm: f64| input_near.grid.within(input, p, reach_mm).first().copied();
+    let nearest_input = |p: DVec2, reach_mm: f64| input_near.grid.nearest(input, p, reach_mm);
     let nearest: Vec<Vec<u32>> = (0..n_out)
         .map(|s| {
             let reach = 2.0 * settings.radius_mm;
@@ -159,12 +159,16 @@ pub fn search(
         }
     };
     // Propagation, then random search, for output sample `o`.
-    let visit_sample = |o: usize, field: &mut NearestField, stream: &mut SplitMix64| {
+    // `tried` holds the inputs already scored for `o` in this search: the
+    // output does not move during a search, so a candidate that lost once
+    // loses again against a match that can only have got cheaper.
+    let visit_sample = |o: usize, field: &mut NearestField, tried: &mut Vec<u32>, stream: &mut SplitMix64| {
         let here = output.samples[o].position_mm;
-        let try_candidate = |field: &mut NearestField, i: u32| {
-            if i == field.input_of[o] {
+        let mut try_candidate = |field: &mut NearestField, i: u32| {
+            if i == field.input_of[o] || tried.contains(&i) {
                 return;
             }
+            tried.push(i);
             let c = cost_below(o, i, field.cost[o]);
             if c < field.cost[o] {
                 field.input_of[o] = i;
@@ -191,6 +195,7 @@ pub fn search(
             window *= 0.5;
         }
     };
+    let mut tried: Vec<Vec<u32>> = field.input_of.iter().map(|&i| vec![i]).collect();
     for pass in 0..settings.iterations {
         // The visiting order in stretches, each searched by its own thread
         // against the field as the pass found it (and its own updates):
@@ -202,26 +207,36 @@ pub fn search(
             visit.reverse();
         }
         let stretch = visit.len().div_ceil(SEARCH_STRETCHES).max(1);
-        let snapshot = &field;
-        let updates: Vec<Vec<(usize, u32, f64)>> = visit
+        let (snapshot, tried_before) = (&field, &tried);
+        let updates: Vec<Vec<Visited>> = visit
             .par_chunks(stretch)
             .enumerate()
             .map(|(k, chunk)| {
                 let mut local = snapshot.clone();
                 let mut stream = SplitMix64::new(mix(settings.seed ^ mix(((pass as u64) << 32) | k as u64)));
-                for &o in chunk {
-                    visit_sample(o as usize, &mut local, &mut stream);
-                }
-                chunk.iter().map(|&o| (o as usize, local.input_of[o as usize], local.cost[o as usize])).collect()
+                chunk
+                    .iter()
+                    .map(|&o| {
+                        let o = o as usize;
+                        let mut tried_o = tried_before[o].clone();
+                        visit_sample(o, &mut local, &mut tried_o, &mut stream);
+                        (o, local.input_of[o], local.cost[o], tried_o)
+                    })
+                    .collect()
             })
             .collect();
-        for (o, i, c) in updates.into_iter().flatten() {
+        for (o, i, c, tried_o) in updates.into_iter().flatten() {
             field.input_of[o] = i;
             field.cost[o] = c;
+            tried[o] = tried_o;
         }
     }
     field
 }
+
+/// What visiting one output sample found: the sample, its match and that
+/// match's cost, and the inputs tried for it so far.
+type Visited = (usize, u32, f64, Vec<u32>);
 
 /// Every sample once, breadth first over `nearest` from the first sample
 /// of each connected part.
