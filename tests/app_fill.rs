@@ -52,13 +52,23 @@ fn inside(ring: &[DVec2], p: DVec2) -> bool {
     crossings % 2 == 1
 }
 
-/// Draws a region fill's outline and waits for it; returns the fill's id.
-fn draw_fill(harness: &mut App) -> u64 {
+/// Chooses the mode *Region fill* for what is drawn next.
+fn choose_region_fill(harness: &mut App) {
     harness.get_by_label("Mode").click();
     harness.run_steps(2);
     harness.get_by_label("Region fill").click();
     harness.run_steps(2);
     assert!(matches!(harness.state().settings(), ModeSettings::RegionFill(_)));
+}
+
+/// Draws a region fill's outline and waits for it; returns the fill's id.
+fn draw_fill(harness: &mut App) -> u64 {
+    choose_region_fill(harness);
+    draw_outline(harness)
+}
+
+/// Draws the outline of a fill of the chosen kind and waits for it; returns its id.
+fn draw_outline(harness: &mut App) -> u64 {
     drag(harness, &circle(CENTRE, 110.0));
     settle(harness);
     let fill = &harness.state().doc.curves[0];
@@ -102,8 +112,8 @@ fn autocomplete_suggests_paths_that_are_accepted_picked_or_refused() {
     settle(&mut harness);
     let ModeSettings::RegionFill(item) = &harness.state().doc.curve(fill).unwrap().mode else { panic!("not a fill") };
     assert!(!item.fill_automatically);
-    harness.get_by_label("Pen").click();
-    harness.step();
+    // The tools are at the top of the side panel, which may have scrolled.
+    click_in_side_panel(&mut harness, "Pen");
 
     // A stroke: suggestions appear around it, inside the fill.
     drag(&mut harness, &stroke(CENTRE + egui::vec2(-60.0, 20.0), 120.0));
@@ -163,16 +173,15 @@ fn clone_copies_what_was_drawn_in_a_source_to_a_target() {
     harness.step();
     let fill = draw_fill(&mut harness);
     click_in_side_panel(&mut harness, "Fill automatically");
-    harness.get_by_label("Pen").click();
-    harness.step();
+    // The tools are at the top of the side panel, which may have scrolled.
+    click_in_side_panel(&mut harness, "Pen");
     for k in 0..4 {
         drag(&mut harness, &stroke(CENTRE + egui::vec2(-90.0, -70.0 + 14.0 * k as f32), 70.0));
         harness.key_press(Key::Escape);
         harness.run_steps(2);
     }
     assert_eq!(pens(&harness), 4);
-    harness.get_by_label("Clone").click();
-    harness.step();
+    click_in_side_panel(&mut harness, "Clone");
     // The source around the strokes, then the target to their right.
     drag(&mut harness, &[CENTRE + egui::vec2(-95.0, -85.0), CENTRE + egui::vec2(-15.0, -10.0)]);
     assert!(harness.state().predicted().is_none());
@@ -192,4 +201,60 @@ fn clone_copies_what_was_drawn_in_a_source_to_a_target() {
     harness.run_steps(2);
     assert!(pens(&harness) > 4);
     assert!(harness.state().doc.curve(fill).is_some());
+}
+
+/// The share of `paths`' length in segments within 20° of horizontal.
+fn horizontal_share(paths: &[Vec<DVec2>]) -> f64 {
+    let (mut level, mut all) = (0.0, 0.0);
+    for w in paths.iter().flat_map(|p| p.windows(2)) {
+        let d = w[1] - w[0];
+        all += d.length();
+        if d.y.abs() <= d.x.abs() * 20f64.to_radians().tan() {
+            level += d.length();
+        }
+    }
+    level / all
+}
+
+#[test]
+fn a_curve_exemplar_imported_in_region_fill_is_what_the_fill_is_made_of() {
+    let dir = tempdir("app-fill-import");
+    // Rows of gentle waves, 40 mm wide: nothing like any built-in.
+    let rows: String = (0..8)
+        .map(|k| {
+            let y = 3.0 + 4.5 * k as f64;
+            format!("<path d='M 0 {y} C 10 {a} 20 {b} 40 {y}' fill='none' stroke='black'/>", a = y - 1.0, b = y + 1.0)
+        })
+        .collect();
+    let svg =
+        format!("<svg xmlns='http://www.w3.org/2000/svg' width='40mm' height='38mm' viewBox='0 0 40 38'>{rows}</svg>");
+    std::fs::write(dir.join("rows.svg"), svg).unwrap();
+    std::fs::write(dir.join("words.svg"), "<svg xmlns='http://www.w3.org/2000/svg'><text>no strokes</text></svg>")
+        .unwrap();
+    let mut harness =
+        harness(vec![(FileKind::ImportSvg, dir.join("words.svg")), (FileKind::ImportSvg, dir.join("rows.svg"))]);
+    harness.step();
+    choose_region_fill(&mut harness);
+
+    // A drawing without strokes is refused, and nothing changes.
+    click_in_side_panel(&mut harness, "Import SVG…");
+    harness.run_steps(2);
+    assert!(harness.state().doc.imported.is_empty());
+    harness.get_by_label_contains("Could not import");
+
+    // The rows are imported as a curve exemplar and chosen.
+    click_in_side_panel(&mut harness, "Import SVG…");
+    harness.run_steps(2);
+    let ModeSettings::RegionFill(item) = harness.state().settings() else { panic!("the controls left region fill") };
+    assert_eq!(item.exemplar.name(), "rows");
+    assert!(harness.query_all_by_label("rows").count() >= 1, "the picker shows the imported rows");
+
+    // A fill drawn now is made of rows: its paths run level, where the
+    // built-in exemplars run every way.
+    let fill = draw_outline(&mut harness);
+    let product = harness.state().output(fill).expect("a fill").clone();
+    let paths: Vec<Vec<DVec2>> = product.paths_mm.iter().map(|p| p.points_mm.clone()).collect();
+    assert!(paths.len() >= 4, "the fill has paths");
+    let share = horizontal_share(&paths);
+    assert!(share > 0.8, "only {share:.2} of the fill runs level like the rows");
 }

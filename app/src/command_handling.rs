@@ -12,7 +12,9 @@ use tracery_core::mesh::Mesh;
 use crate::TraceryApp;
 use crate::command::Command;
 use crate::dialogs::FileKind;
-use crate::document::{Document, DocumentError, ExemplarRef, ModeSettings, RasterBrushItem, VectorBrushItem};
+use crate::document::{
+    Document, DocumentError, ExemplarRef, ModeSettings, RasterBrushItem, RegionFillItem, VectorBrushItem,
+};
 use crate::files::write_atomically;
 use crate::model::ASSEMBLY;
 use crate::state::Workspace;
@@ -154,9 +156,18 @@ impl TraceryApp {
         });
     }
 
-    /// Imports an SVG exemplar from `path` for the vector brush; on failure
-    /// the document is left as it was.
+    /// Imports an SVG exemplar from `path`: a curve exemplar when the
+    /// controls are region fill's, otherwise one for the vector brush. On
+    /// failure the document is left as it was.
     pub fn import_svg(&mut self, path: &Path) {
+        if let ModeSettings::RegionFill(item) = self.settings() {
+            let item = item.clone();
+            self.import_exemplar(path, "curves.svg", |doc, name, bytes| {
+                let r = doc.import_curves(name, &String::from_utf8_lossy(bytes))?;
+                Ok((r.clone(), RegionFillItem { exemplar: r, ..item }.into()))
+            });
+            return;
+        }
         self.import_exemplar(path, "exemplar.svg", |doc, name, bytes| {
             let r = doc.import(name, &String::from_utf8_lossy(bytes))?;
             // An SVG exemplar is for the vector brush: the controls switch to it.
@@ -375,7 +386,7 @@ impl TraceryApp {
     }
 
     /// Files dropped on the window: projects open, PNG files import as raster
-    /// exemplars, anything else as a vector exemplar.
+    /// exemplars, anything else as an SVG exemplar (see [`Self::import_svg`]).
     pub(crate) fn dropped_files(&mut self, ctx: &egui::Context) {
         let dropped = ctx.input(|i| i.raw.dropped_files.clone());
         for file in dropped {

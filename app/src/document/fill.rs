@@ -9,7 +9,7 @@ use tracery_core::DVec2;
 use tracery_core::geom::ring_contains;
 use tracery_core::region_fill::{self, BUILTIN_CURVES, CurveExemplar};
 
-use super::{Document, DocumentError, ExemplarRef};
+use super::{Document, DocumentError, ExemplarRef, ImportedExemplar, file_stem, unique_name};
 
 /// Whether a pen stroke (its smoothed points, mm) lies in the region inside
 /// `outline` (a fill's smoothed outline): most of its points do. The fill
@@ -70,6 +70,20 @@ impl Default for PenItem {
 }
 
 impl Document {
+    /// Imports an SVG curve exemplar for region fill, checking it loads
+    /// (stroked paths, or filled shapes' outlines); returns its reference.
+    pub fn import_curves(&mut self, file_name: &str, svg: &str) -> Result<ExemplarRef, DocumentError> {
+        let base = file_stem(file_name);
+        let exemplar = CurveExemplar::from_svg_data(base.clone(), svg.as_bytes())
+            .map_err(|e| DocumentError::Exemplar(format!("{file_name}: {e}")))?;
+        exemplar
+            .validate(region_fill::MIN_DELTA_MM)
+            .map_err(|e| DocumentError::Exemplar(format!("{file_name}: {e}")))?;
+        let name = unique_name(&base, |n| self.imported.iter().any(|e| e.name == n) || BUILTIN_CURVES.contains(&n));
+        self.imported.push(ImportedExemplar { name: name.clone(), svg: svg.to_string() });
+        Ok(ExemplarRef::Imported(name))
+    }
+
     /// Loads the curve exemplar a fill refers to: a built-in, or an
     /// imported SVG read for its strokes and shapes.
     pub fn curve_exemplar(&self, r: &ExemplarRef) -> Result<CurveExemplar, DocumentError> {

@@ -17,6 +17,7 @@ use tracery_core::region_fill::{
 
 use super::{ModeEnv, ModeJob, ModeUi, same};
 use crate::canvas::{View, polyline};
+use crate::command::Command;
 use crate::document::{Document, DocumentError, ExemplarRef, ModeSettings, RegionFillItem, inside};
 use crate::panels::exemplar_picker::thumbnail_grid_ui;
 use crate::state::Caches;
@@ -120,8 +121,20 @@ impl ModeUi for RegionFillUi {
     fn settings_ui(&self, ui: &mut egui::Ui, settings: &mut ModeSettings, env: &mut ModeEnv<'_>) {
         let ModeSettings::RegionFill(item) = settings else { return };
         ui.label(RichText::new("Curve exemplar").strong());
-        let refs: Vec<ExemplarRef> = BUILTIN_CURVES.iter().map(|n| ExemplarRef::Builtin(n.to_string())).collect();
+        let mut refs: Vec<ExemplarRef> = BUILTIN_CURVES.iter().map(|n| ExemplarRef::Builtin(n.to_string())).collect();
+        // Imported drawings that read as curves (an SVG imported for the
+        // vector brush may not).
+        let imported: Vec<ExemplarRef> =
+            env.doc.imported.iter().map(|e| ExemplarRef::Imported(e.name.clone())).collect();
+        refs.extend(imported.into_iter().filter(|r| env.caches.curve_exemplar(env.doc, r).is_ok()));
         thumbnail_grid_ui(ui, "curve exemplars", &refs, &mut item.exemplar, |ui, r| thumbnail_ui(ui, env, r));
+        if ui
+            .button(Command::ImportSvg.label())
+            .on_hover_text("Your own drawing's strokes: or drop an SVG file on the window")
+            .clicked()
+        {
+            env.commands.push(Command::ImportSvg);
+        }
         ui.label(RichText::new("Draw a closed outline with the Draw tool; its inside fills.").weak());
         ui.separator();
         let s = &mut item.settings;
