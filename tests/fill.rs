@@ -92,13 +92,24 @@ fn bad_input_fails_with_one_line_and_no_file() {
     .unwrap();
     let empty = dir.join("empty.svg");
     std::fs::write(&empty, r#"<svg xmlns="http://www.w3.org/2000/svg" viewBox="0 0 50 50"></svg>"#).unwrap();
+    // One ring 300 mm across: a 40 mm region falls inside it, with nothing to copy.
+    let ring = dir.join("ring.svg");
+    std::fs::write(
+        &ring,
+        r#"<svg xmlns="http://www.w3.org/2000/svg" width="320mm" height="320mm" viewBox="0 0 320 320"><circle cx="160" cy="160" r="150" fill="none" stroke="black"/></svg>"#,
+    )
+    .unwrap();
     let stl = dir.join("out.stl");
-    let cases: [(&[&str], &str); 5] = [
+    let cases: [(&[&str], &str); 8] = [
         (&["--exemplar", "waves", "--region", "circle:3"], "too small"),
         (&["--exemplar", "waves", "--region", "hexagon:3"], "not a region"),
         (&["--exemplar", "waves", "--region", &format!("svg:{}", path(&bow_tie))], "crosses itself"),
         (&["--exemplar", &path(&empty), "--region", "rect:40x40"], "no stroked path"),
         (&["--exemplar", "waves", "--region", "rect:40x40", "--stroke-width", "-1"], "stroke width"),
+        (&["--exemplar", "waves", "--region", "rect:40x40", "--exemplar-scale", "0"], "exemplar scale"),
+        // Waves shrunk to under a millimetre: finer than any sample spacing.
+        (&["--exemplar", "waves", "--region", "rect:40x40", "--exemplar-scale", "0.02"], "nothing of the exemplar"),
+        (&["--exemplar", &path(&ring), "--region", "rect:40x40"], "far larger than the 40 x 40 mm region"),
     ];
     for (args, expected) in cases {
         let out = tracery().arg("fill").args(args).arg("--stl").arg(&stl).output().unwrap();

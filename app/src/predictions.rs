@@ -159,8 +159,12 @@ impl TraceryApp {
                 }
             };
             let window = intersection(&Region::rectangle(window), &region);
-            let job =
-                PredictJob { exemplar, window: Arc::new(window), drawn: Arc::new(drawn), settings: fill.settings };
+            let mut settings = fill.settings;
+            if source.is_some() {
+                // What was drawn is in mm already: the clone copies it at its own size.
+                settings.exemplar_scale = 1.0;
+            }
+            let job = PredictJob { exemplar, window: Arc::new(window), drawn: Arc::new(drawn), settings };
             Ok::<_, String>(Predictions { fill: id, kind, job, picked: Vec::new() })
         })();
         match result {

@@ -3,9 +3,10 @@
 //! built-ins' sample graphs against their polylines.
 
 use glam::DVec2;
+use tracery_core::control::Control;
 use tracery_core::region_fill::{
-    BUILTIN_CURVES, CurvePath, JOIN_TOLERANCE_MM, SampleGraph, SampleGrid, SampleKind, builtin_curves, hierarchy,
-    robust_match,
+    BUILTIN_CURVES, CurveExemplar, CurvePath, JOIN_TOLERANCE_MM, SampleGraph, SampleGrid, SampleKind, Settings,
+    builtin_curves, hierarchy, make_product, parse_region, robust_match,
 };
 
 /// The cheapest cost over every way of matching each output to a distinct
@@ -381,4 +382,20 @@ fn the_grids_nearest_sample_is_the_first_of_those_within_reach() {
         let reach = 0.5 + unit() * 30.0;
         assert_eq!(grid.nearest(&graph, centre, reach), grid.within(&graph, centre, reach).first().copied());
     }
+}
+
+#[test]
+fn a_larger_exemplar_scale_gives_a_coarser_fill() {
+    // The waves drawn twice as large repeat half as often: the fill's
+    // curves, per square millimetre, are about half as long.
+    let exemplar = CurveExemplar::builtin("waves").unwrap();
+    let region = parse_region("rect:60x40").unwrap();
+    let length = |scale: f64| {
+        let mut settings = Settings::default();
+        settings.exemplar_scale = scale;
+        let product = make_product(&exemplar, &region, &settings, &Control::default()).unwrap();
+        product.paths_mm.iter().map(|p| p.points_mm.windows(2).map(|w| w[0].distance(w[1])).sum::<f64>()).sum::<f64>()
+    };
+    let ratio = length(2.0) / length(1.0);
+    assert!((0.35..=0.65).contains(&ratio), "twice the scale gives {ratio:.2} of the length");
 }

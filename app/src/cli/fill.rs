@@ -36,6 +36,9 @@ pub struct FillArgs {
     /// Sample spacing at the finest level, mm: the scale of the detail the fill copies [default: 1.5].
     #[arg(long)]
     pub spacing: Option<f64>,
+    /// The exemplar drawn this many times larger (below 1, smaller) before the fill learns from it [default: 1].
+    #[arg(long)]
+    pub exemplar_scale: Option<f64>,
     /// Which random choices the synthesis makes [default: 1].
     #[arg(long)]
     pub seed: Option<u64>,
@@ -50,6 +53,7 @@ impl FillArgs {
         s.thickness_mm = self.thickness.unwrap_or(s.thickness_mm);
         s.one_piece = self.one_piece;
         s.delta_mm = self.spacing.unwrap_or(s.delta_mm);
+        s.exemplar_scale = self.exemplar_scale.unwrap_or(s.exemplar_scale);
         s.seed = self.seed.unwrap_or(s.seed);
         s
     }

@@ -140,6 +140,8 @@ impl ModeUi for RegionFillUi {
         let s = &mut item.settings;
         ui.checkbox(&mut item.fill_automatically, "Fill automatically")
             .on_hover_text("Off: only your pen strokes print, and autocomplete suggests more as you draw them");
+        ui.add(egui::Slider::new(&mut s.exemplar_scale, 0.05..=4.0).logarithmic(true).text("Exemplar scale"))
+            .on_hover_text("Draws the exemplar larger or smaller before the fill learns from it");
         ui.add(egui::Slider::new(&mut s.delta_mm, 0.8..=4.0).text("Spacing δ (mm)"))
             .on_hover_text("Samples along the curves: smaller follows the exemplar more closely, larger is faster");
         ui.add(egui::Slider::new(&mut s.stroke_width_mm, 0.3..=3.0).text("Stroke width (mm)"));

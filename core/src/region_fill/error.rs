@@ -72,6 +72,19 @@ pub enum FillError {
         /// The cap.
         max: usize,
     },
+    /// The synthesis kept nothing of the exemplar.
+    #[error(
+        "nothing of the exemplar survived the fill: at {:.0} x {:.0} mm it may be far larger than the {:.0} x {:.0} mm region, or its detail finer than the {delta_mm} mm sample spacing (change the exemplar scale)",
+        exemplar_mm[0], exemplar_mm[1], region_mm[0], region_mm[1]
+    )]
+    NothingSynthesized {
+        /// The exemplar's size as the fill learns from it, mm.
+        exemplar_mm: [f64; 2],
+        /// The size of the region's bounds, mm.
+        region_mm: [f64; 2],
+        /// The finest sample spacing, mm.
+        delta_mm: f64,
+    },
     /// The solid could not be made.
     #[error("the print could not be made: {0}")]
     Mesh(#[from] MeshError),

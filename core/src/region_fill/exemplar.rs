@@ -79,6 +79,23 @@ impl CurveExemplar {
         CurveExemplar::from_svg_data(name, &data)
     }
 
+    /// The exemplar drawn `factor` times larger, about the origin.
+    ///
+    /// ```
+    /// use tracery_core::region_fill::CurveExemplar;
+    /// let waves = CurveExemplar::builtin("waves").unwrap();
+    /// let half = waves.scaled(0.5);
+    /// assert!((half.paths[0].length_mm() - 0.5 * waves.paths[0].length_mm()).abs() < 1e-9);
+    /// ```
+    pub fn scaled(&self, factor: f64) -> CurveExemplar {
+        let paths = self
+            .paths
+            .iter()
+            .map(|p| CurvePath { points_mm: p.points_mm.iter().map(|q| *q * factor).collect(), closed: p.closed })
+            .collect();
+        CurveExemplar { name: self.name.clone(), paths }
+    }
+
     /// Checks the exemplar has something to learn from and is not so large
     /// that sampling it at `delta_mm` would take too long.
     pub fn validate(&self, delta_mm: f64) -> Result<(), FillError> {

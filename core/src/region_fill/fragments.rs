@@ -72,6 +72,19 @@ impl FragmentLimits {
         FragmentLimits { min_spur_mm: half(spur), min_loose_mm: half(loose) }
     }
 
+    /// The limits, each at most `max_mm`. An exemplar drawn as one large
+    /// outline (an ornament's filled shape) would otherwise ask for loose
+    /// bits hundreds of millimetres long, and the fill would keep nothing.
+    ///
+    /// ```
+    /// use tracery_core::region_fill::FragmentLimits;
+    /// let l = FragmentLimits { min_spur_mm: 6.0, min_loose_mm: 390.0 }.capped(37.0);
+    /// assert_eq!((l.min_spur_mm, l.min_loose_mm), (6.0, 37.0));
+    /// ```
+    pub fn capped(self, max_mm: f64) -> FragmentLimits {
+        FragmentLimits { min_spur_mm: self.min_spur_mm.min(max_mm), min_loose_mm: self.min_loose_mm.min(max_mm) }
+    }
+
     /// `paths` without spurs and loose bits shorter than the limits, the
     /// paths left meeting two at a point joined into one. An end where
     /// `anchored` is true (near the edge of the synthesized area, where the

@@ -40,7 +40,7 @@ pub use reconstruct::{CORNER_TURN, SMOOTH_TOLERANCE_MM, smooth_paths};
 pub use region::{MAX_FILL_SAMPLES, REGION_TOLERANCE_MM, check_region, parse_region, region_from_outlines};
 pub use sample_graph::{JOIN_TOLERANCE_MM, MAX_SEGMENTS, Sample, SampleError, SampleGraph, SampleKind};
 pub use search::{NearestField, Neighbourhoods, SearchSettings, search};
-pub use settings::{InvalidSetting, MAX_ITERATIONS, MIN_DELTA_MM, Settings};
+pub use settings::{InvalidSetting, MAX_EXEMPLAR_SCALE, MAX_ITERATIONS, MIN_DELTA_MM, MIN_EXEMPLAR_SCALE, Settings};
 pub use synthesis::{fill_rectangle, synthesize, synthesize_around};
 
 /// Levels of the sample hierarchy, coarse to fine.

@@ -27,6 +27,11 @@ const MIN_CLIPPED_SPACINGS: f64 = 1.0;
 /// exemplar has none to learn a length from.
 const FRAGMENT_FALLBACK_SPACINGS: f64 = 4.0;
 
+/// Spurs and loose bits longer than this many neighbourhood radii stay,
+/// whatever the exemplar: longer than the spirals' loose spirals (7.6
+/// radii at the defaults), and past what one neighbourhood can judge stray.
+const FRAGMENT_CAP_RADII: f64 = 8.0;
+
 /// Fills `region` (mm) with a curve texture like `exemplar`.
 ///
 /// ```no_run
@@ -59,6 +64,11 @@ pub fn make_product_around(
 ) -> Result<Product, FillError> {
     let mut timings = Timings::default();
     let paths = predict_timed(exemplar, region, drawn, settings, control, &mut timings)?;
+    // Everything may also go as fragments or outside the region.
+    if paths.is_empty() && drawn.is_empty() {
+        let bounds = region.bounds().ok_or(FillError::EmptyRegion)?;
+        return Err(nothing_left(exemplar, &bounds, settings.exemplar_scale, settings));
+    }
     finish(paths, region, drawn, settings, control, timings)
 }
 
@@ -84,6 +94,17 @@ pub fn print_drawn(
         return Err(FillError::EmptyRegion);
     }
     finish(Vec::new(), region, drawn, settings, control, Timings::default())
+}
+
+/// Why a fill of `bounds` kept nothing of `exemplar` drawn `scale` times larger.
+fn nothing_left(exemplar: &CurveExemplar, bounds: &Rect, scale: f64, settings: &Settings) -> FillError {
+    let size = Rect::from_points(exemplar.paths.iter().flat_map(|p| p.points_mm.iter().copied()))
+        .map_or(DVec2::ZERO, |b| b.size() * scale);
+    FillError::NothingSynthesized {
+        exemplar_mm: [size.x, size.y],
+        region_mm: [bounds.width(), bounds.height()],
+        delta_mm: settings.delta_mm,
+    }
 }
 
 /// The product of new `paths` and `drawn` ones in `region`.
@@ -166,6 +187,13 @@ fn predict_timed(
     timings: &mut Timings,
 ) -> Result<Vec<CurvePath>, FillError> {
     settings.validate()?;
+    let scaled;
+    let exemplar = if settings.exemplar_scale == 1.0 {
+        exemplar
+    } else {
+        scaled = exemplar.scaled(settings.exemplar_scale);
+        &scaled
+    };
     exemplar.validate(settings.delta_mm)?;
     check_region(region, settings)?;
     let bounds = region.bounds().ok_or(FillError::EmptyRegion)?;
@@ -178,13 +206,17 @@ fn predict_timed(
     let drawn: Vec<CurvePath> = drawn.iter().filter(|p| near(p)).cloned().collect();
     let mut synthesized =
         timings.time("synthesis", || synthesize_around(&exemplar.paths, &bounds, &drawn, settings, control))?;
+    if synthesized.is_empty() && drawn.is_empty() {
+        return Err(nothing_left(exemplar, &bounds, 1.0, settings));
+    }
     // A new path that stops just short of a drawn stroke's end continues it.
     join_drawn_ends(&mut synthesized, &drawn, settings.delta_mm);
     control.check()?;
     let smooth = timings.time("reconstruction", || {
         let radius = settings.radius_mm();
         let learned = SampleGraph::new(&exemplar.paths, settings.delta_mm).map(|g| g.to_paths());
-        let limits = FragmentLimits::learn(&learned?, radius, FRAGMENT_FALLBACK_SPACINGS * settings.delta_mm);
+        let limits = FragmentLimits::learn(&learned?, radius, FRAGMENT_FALLBACK_SPACINGS * settings.delta_mm)
+            .capped(FRAGMENT_CAP_RADII * radius);
         let inner = bounds.inflate(-radius);
         // Ends near the edge go on past it, and ends on a drawn path join it: neither is loose.
         let on_drawn = |p: DVec2| drawn.iter().any(|d| d.distance_to(p) <= JOIN_TOLERANCE_MM);

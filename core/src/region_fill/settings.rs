@@ -28,6 +28,10 @@ pub struct Settings {
     pub radius_spacings: f64,
     /// Search and assignment steps at each level.
     pub iterations: usize,
+    /// The exemplar is drawn this many times larger (below 1, smaller)
+    /// before the fill learns from it: an imported drawing in arbitrary
+    /// units is brought to the size its pattern should have.
+    pub exemplar_scale: f64,
     /// Which random choices the synthesis makes: another seed, another fill.
     pub seed: u64,
     /// Width of the pen the paths are drawn with, mm: the strokes' width in
@@ -48,6 +52,7 @@ impl Default for Settings {
             delta_mm: 1.5,
             radius_spacings: 3.1,
             iterations: 7,
+            exemplar_scale: 1.0,
             seed: 1,
             stroke_width_mm: 0.8,
             frame_mm: 0.0,
@@ -60,6 +65,12 @@ impl Default for Settings {
 /// The finest sample spacing allowed, mm: finer would only multiply the
 /// samples of a pattern no printer or pen could show.
 pub const MIN_DELTA_MM: f64 = 0.2;
+
+/// The smallest exemplar scale: a drawing in points shrunk to a hundredth.
+pub const MIN_EXEMPLAR_SCALE: f64 = 0.01;
+
+/// The largest exemplar scale.
+pub const MAX_EXEMPLAR_SCALE: f64 = 100.0;
 
 /// The most steps at one level: the paper's 7 settle a fill; far more only waste time.
 pub const MAX_ITERATIONS: usize = 50;
@@ -83,6 +94,14 @@ impl Settings {
             return Err(InvalidSetting(format!(
                 "the neighbourhood radius must be between 1.5 and 8 spacings, not {}",
                 self.radius_spacings
+            )));
+        }
+        if !(self.exemplar_scale.is_finite()
+            && (MIN_EXEMPLAR_SCALE..=MAX_EXEMPLAR_SCALE).contains(&self.exemplar_scale))
+        {
+            return Err(InvalidSetting(format!(
+                "the exemplar scale must be between {MIN_EXEMPLAR_SCALE} and {MAX_EXEMPLAR_SCALE}, not {}",
+                self.exemplar_scale
             )));
         }
         if !(1..=MAX_ITERATIONS).contains(&self.iterations) {
