@@ -7,11 +7,14 @@
 //! `cargo run -p tracery-core --release --example fill_autocomplete -- [OUT.png]`
 //! (`docs/fill-autocomplete.png` by default).
 
-use tiny_skia::{Color, Paint, PathBuilder, Pixmap, Stroke, Transform};
+use tiny_skia::{Color, Pixmap};
 use tracery_core::DVec2;
 use tracery_core::control::Control;
 use tracery_core::geom::{Rect, Region, clip_polylines};
 use tracery_core::region_fill::{BUILTIN_CURVES, CurveExemplar, CurvePath, Settings, predict};
+
+#[path = "common/sheet.rs"]
+mod sheet;
 
 /// Pixels per millimetre.
 const SCALE: f32 = 8.0;
@@ -22,21 +25,10 @@ const STRIP_MM: f64 = 12.0;
 
 /// Draws `paths` with the window's lower-left at `origin_px` (y up).
 fn draw(sheet: &mut Pixmap, paths: &[CurvePath], origin_px: (f32, f32), rgb: (u8, u8, u8)) {
-    let mut ink = Paint::default();
-    ink.set_color_rgba8(rgb.0, rgb.1, rgb.2, 255);
-    ink.anti_alias = true;
+    let ink = sheet::paint(rgb.0, rgb.1, rgb.2);
     for path in paths {
-        let mut pb = PathBuilder::new();
-        for (i, p) in path.points_mm.iter().enumerate() {
-            let (x, y) = (origin_px.0 + p.x as f32 * SCALE, origin_px.1 + (WINDOW_MM - p.y) as f32 * SCALE);
-            if i == 0 { pb.move_to(x, y) } else { pb.line_to(x, y) }
-        }
-        if path.closed {
-            pb.close();
-        }
-        if let Some(line) = pb.finish() {
-            sheet.stroke_path(&line, &ink, &Stroke { width: 2.0, ..Default::default() }, Transform::identity(), None);
-        }
+        let at = |p: &DVec2| (origin_px.0 + p.x as f32 * SCALE, origin_px.1 + (WINDOW_MM - p.y) as f32 * SCALE);
+        sheet::stroke_polyline(sheet, path.points_mm.iter().map(at), path.closed, &ink, 2.0);
     }
 }
 

@@ -15,11 +15,14 @@
 use std::sync::atomic::{AtomicBool, Ordering};
 use std::time::{Duration, Instant};
 
-use tiny_skia::{Color, Paint, PathBuilder, Pixmap, Stroke, Transform};
+use tiny_skia::{Color, Paint, Pixmap};
 use tracery_core::control::Control;
 use tracery_core::geom::{Rect, Region};
 use tracery_core::quality::{coverage, curve_statistics_within};
 use tracery_core::region_fill::{CurveExemplar, FillError, Settings, make_product, parse_region};
+
+#[path = "common/sheet.rs"]
+mod sheet;
 
 /// Pixels per millimetre on the sheet.
 const SCALE: f32 = 3.0;
@@ -190,23 +193,8 @@ fn draw_sheet(outcomes: &[(String, Outcome)], path: &str) {
             }
         };
         for (points, closed) in &paths {
-            let mut pb = PathBuilder::new();
-            for (i, p) in points.iter().enumerate() {
-                let (x, y) = (ox + p.x as f32 * SCALE, oy + (REGION.1 - p.y) as f32 * SCALE);
-                if i == 0 { pb.move_to(x, y) } else { pb.line_to(x, y) }
-            }
-            if *closed {
-                pb.close();
-            }
-            if let Some(line) = pb.finish() {
-                sheet.stroke_path(
-                    &line,
-                    &ink,
-                    &Stroke { width: 1.0, ..Default::default() },
-                    Transform::identity(),
-                    None,
-                );
-            }
+            let at = |p: &tracery_core::DVec2| (ox + p.x as f32 * SCALE, oy + (REGION.1 - p.y) as f32 * SCALE);
+            sheet::stroke_polyline(&mut sheet, points.iter().map(at), *closed, &ink, 1.0);
         }
     }
     sheet.save_png(path).expect("writing the sheet");

@@ -5,8 +5,11 @@
 //! `cargo run -p tracery-core --release --example fill_exemplars -- [OUT.png]`
 //! (default `docs/fill-exemplars.png`).
 
-use tiny_skia::{Color, FillRule, Paint, PathBuilder, Pixmap, Stroke, Transform};
+use tiny_skia::{Color, FillRule, Paint, PathBuilder, Pixmap, Transform};
 use tracery_core::region_fill::{BUILTIN_CURVES, SampleGraph, SampleKind, builtin_curves};
+
+#[path = "common/sheet.rs"]
+mod sheet;
 
 /// Pixels per millimetre.
 const SCALE: f32 = 9.0;
@@ -28,23 +31,7 @@ fn main() {
         ink.set_color_rgba8(60, 60, 60, 255);
         ink.anti_alias = true;
         for path in &paths {
-            let mut pb = PathBuilder::new();
-            for (i, p) in path.points_mm.iter().enumerate() {
-                let (x, y) = at(*p);
-                if i == 0 { pb.move_to(x, y) } else { pb.line_to(x, y) }
-            }
-            if path.closed {
-                pb.close();
-            }
-            if let Some(line) = pb.finish() {
-                sheet.stroke_path(
-                    &line,
-                    &ink,
-                    &Stroke { width: 1.5, ..Default::default() },
-                    Transform::identity(),
-                    None,
-                );
-            }
+            sheet::stroke_polyline(&mut sheet, path.points_mm.iter().map(|p| at(*p)), path.closed, &ink, 1.5);
         }
         for (s, sample) in graph.samples.iter().enumerate() {
             let (x, y) = at(sample.position_mm);

@@ -5,29 +5,23 @@
 //! `cargo run -p tracery-core --release --example fill_rect -- NAME|all [OUT.png]`
 //! (`all`: every built-in, one row each, into `docs/fill-contact-sheet.png` by default).
 
-use tiny_skia::{Color, Paint, PathBuilder, Pixmap, Stroke, Transform};
+use tiny_skia::{Color, Pixmap};
 use tracery_core::region_fill::{BUILTIN_CURVES, CurvePath, Settings, builtin_curves, fill_rectangle};
+
+#[path = "common/sheet.rs"]
+mod sheet;
 
 /// Pixels per millimetre.
 const SCALE: f32 = 8.0;
 
 /// Draws `paths` with their lower-left at `origin_mm` (y up) on `sheet`.
 fn draw(sheet: &mut Pixmap, paths: &[CurvePath], origin_mm: (f32, f32), height_mm: f32) {
-    let mut ink = Paint::default();
-    ink.set_color_rgba8(30, 30, 30, 255);
-    ink.anti_alias = true;
+    let ink = sheet::paint(30, 30, 30);
     for path in paths {
-        let mut pb = PathBuilder::new();
-        for (i, p) in path.points_mm.iter().enumerate() {
-            let (x, y) = ((origin_mm.0 + p.x as f32) * SCALE, (origin_mm.1 + height_mm - p.y as f32) * SCALE);
-            if i == 0 { pb.move_to(x, y) } else { pb.line_to(x, y) }
-        }
-        if path.closed {
-            pb.close();
-        }
-        if let Some(line) = pb.finish() {
-            sheet.stroke_path(&line, &ink, &Stroke { width: 2.0, ..Default::default() }, Transform::identity(), None);
-        }
+        let at = |p: &tracery_core::DVec2| {
+            ((origin_mm.0 + p.x as f32) * SCALE, (origin_mm.1 + height_mm - p.y as f32) * SCALE)
+        };
+        sheet::stroke_polyline(sheet, path.points_mm.iter().map(at), path.closed, &ink, 2.0);
     }
 }
 

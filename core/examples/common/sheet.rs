@@ -1,5 +1,6 @@
 //! Drawing regions into tiles and tiles into contact sheets, shared by the
-//! examples that make pictures (sweep, gallery, printability).
+//! examples that make pictures (sweep, gallery, printability, the fill
+//! examples).
 #![allow(dead_code)]
 
 use tracery_core::DVec2;
@@ -40,6 +41,28 @@ pub fn paint(r: u8, g: u8, b: u8) -> tiny_skia::Paint<'static> {
     paint.set_color_rgba8(r, g, b, 255);
     paint.anti_alias = true;
     paint
+}
+
+/// A polyline, already in pixels, stroked `width_px` wide (closed back to
+/// its start when `closed`).
+pub fn stroke_polyline(
+    pixmap: &mut tiny_skia::Pixmap,
+    points_px: impl IntoIterator<Item = (f32, f32)>,
+    closed: bool,
+    paint: &tiny_skia::Paint,
+    width_px: f32,
+) {
+    let mut path = tiny_skia::PathBuilder::new();
+    for (k, (x, y)) in points_px.into_iter().enumerate() {
+        if k == 0 { path.move_to(x, y) } else { path.line_to(x, y) }
+    }
+    if closed {
+        path.close();
+    }
+    if let Some(path) = path.finish() {
+        let stroke = tiny_skia::Stroke { width: width_px, ..Default::default() };
+        pixmap.stroke_path(&path, paint, &stroke, tiny_skia::Transform::identity(), None);
+    }
 }
 
 /// `region` drawn filled (even-odd) in `rgb` on a white tile.
