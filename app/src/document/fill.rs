@@ -9,7 +9,7 @@ use tracery_core::DVec2;
 use tracery_core::geom::ring_contains;
 use tracery_core::region_fill::{self, BUILTIN_CURVES, CurveExemplar};
 
-use super::{Document, DocumentError, ExemplarRef, ImportedExemplar, file_stem, unique_name};
+use super::{Document, DocumentError, ExemplarRef, file_stem};
 
 /// Whether a pen stroke (its smoothed points, mm) lies in the region inside
 /// `outline` (a fill's smoothed outline): most of its points do. The fill
@@ -79,9 +79,7 @@ impl Document {
         exemplar
             .validate(region_fill::MIN_DELTA_MM)
             .map_err(|e| DocumentError::Exemplar(format!("{file_name}: {e}")))?;
-        let name = unique_name(&base, |n| self.imported.iter().any(|e| e.name == n) || BUILTIN_CURVES.contains(&n));
-        self.imported.push(ImportedExemplar { name: name.clone(), svg: svg.to_string() });
-        Ok(ExemplarRef::Imported(name))
+        Ok(self.add_imported_svg(&base, svg, &BUILTIN_CURVES))
     }
 
     /// Loads the curve exemplar a fill refers to: a built-in, or an

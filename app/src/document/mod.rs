@@ -363,11 +363,16 @@ impl Document {
         let base = file_stem(file_name);
         Exemplar::from_svg_str(base.clone(), svg, &LoadOptions::default())
             .map_err(|e| DocumentError::Exemplar(format!("{file_name}: {e}")))?;
-        let name = unique_name(&base, |n| {
-            self.imported.iter().any(|e| e.name == n) || vector_brush::BUILTIN_NAMES.contains(&n)
-        });
+        Ok(self.add_imported_svg(&base, svg, vector_brush::BUILTIN_NAMES))
+    }
+
+    /// Adds an SVG already checked to load, under `base` or the first free
+    /// name after it (free of other imports and of the `builtins` it would
+    /// be picked beside); returns its reference.
+    pub(crate) fn add_imported_svg(&mut self, base: &str, svg: &str, builtins: &[&str]) -> ExemplarRef {
+        let name = unique_name(base, |n| self.imported.iter().any(|e| e.name == n) || builtins.contains(&n));
         self.imported.push(ImportedExemplar { name: name.clone(), svg: svg.to_string() });
-        Ok(ExemplarRef::Imported(name))
+        ExemplarRef::Imported(name)
     }
 
     /// The document as `.ron` text, in the current format.
