@@ -17,6 +17,23 @@ impl CurvePath {
         crate::geom::polyline_distance(&self.points_mm, self.closed, p)
     }
 
+    /// The first and last points of an open path of two or more points;
+    /// `None` for a loop, which has no ends.
+    ///
+    /// ```
+    /// use tracery_core::DVec2;
+    /// use tracery_core::region_fill::CurvePath;
+    /// let line = CurvePath { points_mm: vec![DVec2::ZERO, DVec2::X, DVec2::ONE], closed: false };
+    /// assert_eq!(line.free_ends(), Some([DVec2::ZERO, DVec2::ONE]));
+    /// assert_eq!(CurvePath { closed: true, ..line }.free_ends(), None);
+    /// ```
+    pub fn free_ends(&self) -> Option<[DVec2; 2]> {
+        match (self.points_mm.first(), self.points_mm.last()) {
+            (Some(&a), Some(&b)) if !self.closed && self.points_mm.len() >= 2 => Some([a, b]),
+            _ => None,
+        }
+    }
+
     /// Straight pieces: one fewer than the points, or as many for a loop.
     ///
     /// ```

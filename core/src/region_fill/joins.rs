@@ -29,10 +29,7 @@ pub fn join_drawn_ends(new: &mut Vec<CurvePath>, drawn: &[CurvePath], reach_mm: 
     split_at_drawn_ends(new, drawn, reach_mm);
     let mut taken = vec![[false; 2]; new.len()];
     let mut joined = 0;
-    for end in drawn.iter().filter(|p| !p.closed && p.points_mm.len() >= 2).flat_map(|p| {
-        let points = &p.points_mm;
-        [points[0], points[points.len() - 1]]
-    }) {
+    for end in drawn.iter().filter_map(CurvePath::free_ends).flatten() {
         // Another drawn stroke, or a new path through it: already met.
         let met = |p: &CurvePath| p.distance_to(end) <= JOIN_TOLERANCE_MM;
         if new.iter().any(met) || drawn.iter().filter(|p| !is_end_of(p, end)).any(met) {
@@ -41,8 +38,8 @@ pub fn join_drawn_ends(new: &mut Vec<CurvePath>, drawn: &[CurvePath], reach_mm: 
         let nearest = new
             .iter()
             .enumerate()
-            .filter(|(_, p)| !p.closed && p.points_mm.len() >= 2)
-            .flat_map(|(k, p)| [(k, 0, p.points_mm[0]), (k, 1, p.points_mm[p.points_mm.len() - 1])])
+            .filter_map(|(k, p)| p.free_ends().map(|[a, b]| [(k, 0, a), (k, 1, b)]))
+            .flatten()
             .filter(|&(k, side, q)| !taken[k][side] && q.distance(end) <= reach_mm)
             .min_by(|a, b| a.2.distance(end).total_cmp(&b.2.distance(end)));
         let Some((k, side, _)) = nearest else { continue };
@@ -72,11 +69,7 @@ fn is_end_of(path: &CurvePath, end: DVec2) -> bool {
 /// Cuts new paths where they pass through a drawn free end, dropping
 /// pieces shorter than `stub_mm`.
 fn split_at_drawn_ends(new: &mut Vec<CurvePath>, drawn: &[CurvePath], stub_mm: f64) {
-    let ends: Vec<DVec2> = drawn
-        .iter()
-        .filter(|p| !p.closed && p.points_mm.len() >= 2)
-        .flat_map(|p| [p.points_mm[0], p.points_mm[p.points_mm.len() - 1]])
-        .collect();
+    let ends: Vec<DVec2> = drawn.iter().filter_map(CurvePath::free_ends).flatten().collect();
     let on_end = |q: DVec2| ends.iter().any(|e| e.distance(q) <= JOIN_TOLERANCE_MM);
     let mut out = Vec::with_capacity(new.len());
     for path in new.drain(..) {
