@@ -31,7 +31,7 @@ fn main() {
         triangles.extend(extra.into_iter().map(|t| (t, true)));
     }
     // Camera: looking along -y (from the front), tilted 25° down.
-    let tilt = 25f64.to_radians();
+    let tilt = std::env::var("MESH_PNG_TILT_DEG").ok().and_then(|s| s.parse::<f64>().ok()).unwrap_or(25.0).to_radians();
     let forward = DVec3::new(0.0, tilt.cos(), -tilt.sin());
     let up = DVec3::new(0.0, tilt.sin(), tilt.cos());
     let right = forward.cross(up);

@@ -38,6 +38,7 @@ pub mod disjoint_sets;
 pub mod export;
 pub mod geom;
 pub mod mesh;
+pub mod mesh_quilt;
 pub mod print;
 pub mod product;
 pub mod quality;

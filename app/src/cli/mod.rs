@@ -4,6 +4,7 @@
 
 mod fill;
 mod output;
+mod quilt;
 mod raster;
 mod shade;
 mod surface;
@@ -15,6 +16,7 @@ use tracery_core::vector_brush::{BUILTIN_NAMES, PieceSet, SliceOptions, builtin}
 
 pub use fill::FillArgs;
 pub use output::{OutputArgs, Report};
+pub use quilt::QuiltArgs;
 pub use raster::RasterArgs;
 pub use shade::ShadeArgs;
 pub use surface::SurfaceArgs;
@@ -48,6 +50,9 @@ enum Command {
         /// The curve exemplars for `tracery fill` instead.
         #[arg(long, conflicts_with_all = ["raster", "bases"])]
         curves: bool,
+        /// The mesh swatches for `tracery quilt` instead.
+        #[arg(long, conflicts_with_all = ["raster", "bases", "curves"])]
+        swatches: bool,
     },
     /// Vector brush: synthesize a pattern along a curve and write STL, SVG and a report.
     Synth(Box<SynthArgs>),
@@ -59,6 +64,25 @@ enum Command {
     Surface(Box<SurfaceArgs>),
     /// Region fill: a region filled with curves like an exemplar's, written as stroked paths (SVG), a printable solid (STL, 3MF) and a report.
     Fill(Box<FillArgs>),
+    /// Mesh quilting: 3D texture grown over a plane from a mesh swatch, written as STL or 3MF (one closed body per element) and a report.
+    Quilt(Box<QuiltArgs>),
+}
+
+fn list_swatches() -> Result<()> {
+    for name in tracery_core::mesh_quilt::SWATCH_NAMES {
+        let swatch = tracery_core::mesh_quilt::builtin_swatch(name)
+            .with_context(|| format!("modelling built-in swatch '{name}'"))?;
+        let size = swatch.size_mm();
+        println!(
+            "{name:10} {:3} element(s) {:6} triangles  {:.0} x {:.0} x {:.1} mm",
+            swatch.elements.len(),
+            swatch.triangle_count(),
+            size.x,
+            size.y,
+            size.z
+        );
+    }
+    Ok(())
 }
 
 fn list_raster() -> Result<()> {
@@ -116,6 +140,7 @@ pub fn run(cli: Cli) -> Result<()> {
     match cli.command {
         Some(Command::List { bases: true, .. }) => list_bases(),
         Some(Command::List { curves: true, .. }) => list_curves(),
+        Some(Command::List { swatches: true, .. }) => list_swatches(),
         Some(Command::List { raster: false, .. }) => list(),
         Some(Command::List { raster: true, .. }) => list_raster(),
         Some(Command::Synth(args)) => synth::run(*args),
@@ -123,6 +148,7 @@ pub fn run(cli: Cli) -> Result<()> {
         Some(Command::Shade(args)) => shade::run(*args),
         Some(Command::Surface(args)) => surface::run(*args),
         Some(Command::Fill(args)) => fill::run(*args),
+        Some(Command::Quilt(args)) => quilt::run(*args),
         None => Ok(()),
     }
 }

@@ -1,0 +1,76 @@
+//! `tracery quilt`: mesh quilting, 3D texture grown from a mesh swatch.
+//! Every flag left out takes its value from [`Settings::default`].
+
+use std::path::Path;
+
+use anyhow::{Result, bail};
+use clap::Parser;
+use tracery_core::control::Control;
+use tracery_core::mesh::read_mesh_file;
+use tracery_core::mesh_quilt::{SWATCH_NAMES, Settings, Swatch, builtin_swatch, make_product, parse_base};
+
+use super::output::{OutputArgs, write_outputs};
+
+/// Flags of `tracery quilt`.
+#[derive(Parser, Debug, Clone, PartialEq)]
+#[command(allow_negative_numbers = true)]
+pub struct QuiltArgs {
+    /// An STL or OBJ swatch (mm; each connected part one element), or a built-in's name (see `tracery list --swatches`).
+    #[arg(long)]
+    pub swatch: String,
+    /// What to cover: plane:WIDTHxDEPTH (mm).
+    #[arg(long)]
+    pub base: String,
+    /// The swatch made this many times larger [default: 1].
+    #[arg(long)]
+    pub scale: Option<f64>,
+    /// Grid cells across the swatch's shorter side [default: 12].
+    #[arg(long)]
+    pub cells_across: Option<usize>,
+    /// Which random choices the synthesis makes [default: 1].
+    #[arg(long)]
+    pub seed: Option<u64>,
+    #[command(flatten)]
+    pub output: OutputArgs,
+}
+
+impl QuiltArgs {
+    /// The settings these flags ask for: the defaults, with each given flag applied.
+    pub fn settings(&self) -> Settings {
+        let mut s = Settings::default();
+        s.scale = self.scale.unwrap_or(s.scale);
+        s.cells_across = self.cells_across.unwrap_or(s.cells_across);
+        s.seed = self.seed.unwrap_or(s.seed);
+        s
+    }
+}
+
+/// A built-in swatch by name, or a mesh file.
+pub fn load_swatch(spec: &str) -> Result<Swatch> {
+    if let Some(swatch) = builtin_swatch(spec) {
+        return Ok(swatch);
+    }
+    let path = Path::new(spec);
+    if !path.exists() {
+        bail!("no mesh file or built-in swatch named '{spec}' (built-ins: {})", SWATCH_NAMES.join(", "));
+    }
+    let name = path.file_stem().map_or(spec.to_string(), |s| s.to_string_lossy().into_owned());
+    Ok(Swatch::from_mesh(&name, &read_mesh_file(path)?)?)
+}
+
+/// Runs `tracery quilt`.
+pub fn run(args: QuiltArgs) -> Result<()> {
+    args.output.refuse_planar_only("quilt", "area from --base", "quilts")?;
+    if args.output.svg.is_some() || args.output.png.is_some() {
+        bail!("tracery quilt makes a 3D solid: write it with --stl or --3mf, not --svg or --png");
+    }
+    let settings = args.settings();
+    settings.validate()?;
+    if !args.base.starts_with("plane:") {
+        bail!("quilting curved bases is not available yet: use --base plane:WIDTHxDEPTH");
+    }
+    let base = parse_base(&args.base)?;
+    let swatch = load_swatch(&args.swatch)?;
+    let product = make_product(&swatch, base, &settings, &Control::default())?;
+    write_outputs("quilt", &swatch.name, &args.base, &args.output, &product)
+}

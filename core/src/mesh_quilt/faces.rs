@@ -1,0 +1,84 @@
+//! [`Faces`]: the triangles of several elements behind one bounding volume
+//! hierarchy (parry3d's), for closest-face queries.
+
+use glam::DVec3;
+use parry3d_f64::math::Pose;
+use parry3d_f64::math::Vector as PVector;
+use parry3d_f64::query::{PointQueryWithLocation, intersection_test};
+use parry3d_f64::shape::TriMesh;
+
+use super::Element;
+
+/// The closest point of a set of faces to a query.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Closest {
+    /// Distance from the query, mm.
+    pub distance_mm: f64,
+    /// The closest point, mm.
+    pub point_mm: DVec3,
+    /// Which element (its place in the list the faces were built from).
+    pub element: u32,
+    /// Which triangle of that element.
+    pub face: u32,
+    /// The triangle's unit normal.
+    pub normal: DVec3,
+}
+
+/// Triangles of several elements, indexed for closest-point queries.
+pub struct Faces {
+    bvh: Option<TriMesh>,
+    owner: Vec<(u32, u32)>,
+    normals: Vec<DVec3>,
+}
+
+impl Faces {
+    /// The faces of `elements`, named by their place in the slice.
+    pub fn new<'a>(elements: impl IntoIterator<Item = &'a Element>) -> Faces {
+        let mut points = Vec::new();
+        let mut triangles = Vec::new();
+        let mut owner = Vec::new();
+        let mut normals = Vec::new();
+        for (e, element) in elements.into_iter().enumerate() {
+            let base = points.len() as u32;
+            points.extend(element.vertices.iter().map(|v| PVector::new(v.x, v.y, v.z)));
+            for (f, t) in element.triangles.iter().enumerate() {
+                triangles.push(t.map(|i| i + base));
+                owner.push((e as u32, f as u32));
+                normals.push(element.face_normal(f));
+            }
+        }
+        let bvh = if triangles.is_empty() { None } else { TriMesh::new(points, triangles).ok() };
+        Faces { bvh, owner, normals }
+    }
+
+    /// Whether there is no face.
+    pub fn is_empty(&self) -> bool {
+        self.bvh.is_none()
+    }
+
+    /// The closest point to `query_mm`, if there is any face.
+    pub fn closest(&self, query_mm: DVec3) -> Option<Closest> {
+        let bvh = self.bvh.as_ref()?;
+        let (projection, (face, _)) =
+            bvh.project_local_point_and_get_location(PVector::new(query_mm.x, query_mm.y, query_mm.z), false);
+        let point_mm = DVec3::new(projection.point.x, projection.point.y, projection.point.z);
+        let (element, local) = self.owner[face as usize];
+        Some(Closest {
+            distance_mm: point_mm.distance(query_mm),
+            point_mm,
+            element,
+            face: local,
+            normal: self.normals[face as usize],
+        })
+    }
+
+    /// Whether any face of these crosses or touches any face of `other`.
+    pub fn intersects(&self, other: &Faces) -> bool {
+        match (&self.bvh, &other.bvh) {
+            (Some(a), Some(b)) => {
+                intersection_test(&Pose::IDENTITY, a, &Pose::IDENTITY, b).is_ok_and(|hit| hit.intersecting)
+            }
+            _ => false,
+        }
+    }
+}

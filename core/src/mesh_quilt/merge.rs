@@ -1,0 +1,359 @@
+//! Merging a placed patch into the output (the paper's sections 2.5 to
+//! 2.7): element correspondences from vertex–face pairs, deformation of
+//! both sides towards each other, then for each corresponding pair either
+//! one element whole or the two stitched along a graph cut.
+
+use std::collections::HashMap;
+
+use glam::{DVec2, DVec3};
+
+use super::cut::{FORCED, min_cut_keep};
+use super::deform::{Constraint, deform};
+use super::faces::Faces;
+use super::planar::{Grid, Zone, overlaps};
+use super::stitch::stitch;
+use super::{Element, Settings, Swatch};
+
+/// Pairs needed before two elements are taken to correspond: one stray
+/// vertex near another element is not a correspondence.
+const MIN_PAIRS: usize = 3;
+
+/// Weight holding vertices away from the seam where they are, against the
+/// constraints pulling the seam together: the deformation stays local.
+const ANCHOR_WEIGHT: f64 = 0.1;
+
+/// Cells around a patch's footprint within which an output element may move.
+const WORK_CELLS: f64 = 2.0;
+
+/// Parts of a cut element with fewer triangles are specks of the cut, not
+/// pieces of the element.
+const SPECK_TRIANGLES: usize = 12;
+
+/// What merging did, summed over patches.
+#[derive(Clone, Debug, Default, PartialEq, Eq)]
+pub struct MergeCounts {
+    /// Swatch elements added whole, with nothing of the output near them.
+    pub added: usize,
+    /// Output elements replaced whole by a swatch element.
+    pub replaced: usize,
+    /// Output elements kept whole, their swatch element left out.
+    pub kept: usize,
+    /// Pairs stitched into one element.
+    pub stitched: usize,
+    /// Pairs that could not be stitched; one of the two was kept whole.
+    pub unstitched: usize,
+    /// Elements left out because they would have crossed another.
+    pub collided: usize,
+}
+
+impl MergeCounts {
+    /// Adds `other`'s counts to these.
+    pub fn add(&mut self, other: &MergeCounts) {
+        self.added += other.added;
+        self.replaced += other.replaced;
+        self.kept += other.kept;
+        self.stitched += other.stitched;
+        self.unstitched += other.unstitched;
+        self.collided += other.collided;
+    }
+}
+
+/// A vertex of one element close to a face of another.
+#[derive(Clone, Copy, Debug)]
+struct Pair {
+    vertex: u32,
+    other: usize,
+    point: DVec3,
+}
+
+/// Close pairs from the vertices of `from` (passing `wanted`) to `to`.
+fn pairs(from: &Element, to: &Faces, reach_mm: f64, wanted: impl Fn(DVec3) -> bool) -> Vec<Pair> {
+    let normals = from.vertex_normals();
+    from.vertices
+        .iter()
+        .enumerate()
+        .filter(|(_, v)| wanted(**v))
+        .filter_map(|(i, &v)| {
+            let hit = to.closest(v)?;
+            // Opposite normals are two sides of a thin part, not one surface.
+            (hit.distance_mm <= reach_mm && hit.normal.dot(normals[i]) > 0.0).then_some(Pair {
+                vertex: i as u32,
+                other: hit.element as usize,
+                point: hit.point_mm,
+            })
+        })
+        .collect()
+}
+
+/// Merges the swatch placed at `offset` into `output`.
+pub(super) fn merge_patch(
+    output: &mut Vec<Element>,
+    swatch: &Swatch,
+    grid: &Grid,
+    offset: DVec2,
+    settings: &Settings,
+    reach_mm: f64,
+) -> MergeCounts {
+    let mut counts = MergeCounts::default();
+    let in_patch = |v: DVec3| matches!(grid.zone(v), Zone::New | Zone::Overlap);
+    let placed: Vec<Element> = swatch
+        .elements
+        .iter()
+        .map(|e| e.translated(offset.extend(0.0)))
+        .filter(|e| e.vertices.iter().any(|&v| in_patch(v)))
+        .collect();
+    let [i0, j0, i1, j1] = grid.footprint;
+    let c = grid.cell_mm;
+    let area = (
+        DVec2::new(i0 as f64, j0 as f64) * c - DVec2::splat(reach_mm),
+        DVec2::new(i1 as f64, j1 as f64) * c + DVec2::splat(reach_mm),
+    );
+    let near: Vec<usize> = (0..output.len()).filter(|&k| overlaps(output[k].footprint(), area)).collect();
+    let out_faces = Faces::new(near.iter().map(|&k| &output[k]));
+    let in_faces = Faces::new(&placed);
+    let forward: Vec<Vec<Pair>> = near.iter().map(|&k| pairs(&output[k], &in_faces, reach_mm, in_patch)).collect();
+    let backward: Vec<Vec<Pair>> = placed.iter().map(|e| pairs(e, &out_faces, reach_mm, |_| true)).collect();
+    let mut related: HashMap<(usize, usize), usize> = HashMap::new();
+    for (o, list) in forward.iter().enumerate() {
+        for p in list {
+            *related.entry((o, p.other)).or_default() += 1;
+        }
+    }
+    for (i, list) in backward.iter().enumerate() {
+        for p in list {
+            *related.entry((p.other, i)).or_default() += 1;
+        }
+    }
+    // Each element corresponds to the one it has most pairs with, when that
+    // one returns the favour: a ring interlocked with another is near it,
+    // but nearer its own twin.
+    let mut best_in: HashMap<usize, (usize, usize)> = HashMap::new();
+    let mut best_out: HashMap<usize, (usize, usize)> = HashMap::new();
+    let mut links: Vec<((usize, usize), usize)> = related.into_iter().filter(|(_, n)| *n >= MIN_PAIRS).collect();
+    links.sort_unstable();
+    for &((o, i), n) in &links {
+        if best_in.get(&o).is_none_or(|&(_, m)| n > m) {
+            best_in.insert(o, (i, n));
+        }
+        if best_out.get(&i).is_none_or(|&(_, m)| n > m) {
+            best_out.insert(i, (o, n));
+        }
+    }
+    let matched: HashMap<usize, usize> = best_out
+        .iter()
+        .filter(|&(&i, &(o, _))| best_in.get(&o).is_some_and(|&(j, _)| j == i))
+        .map(|(&i, &(o, _))| (i, o))
+        .collect();
+    let mut changes: Vec<(Option<usize>, Element)> = Vec::new();
+    for (i, element) in placed.iter().enumerate() {
+        let Some(&o) = matched.get(&i) else {
+            counts.added += 1;
+            changes.push((None, element.clone()));
+            continue;
+        };
+        let k = near[o];
+        let to_in: Vec<Pair> = forward[o].iter().filter(|p| p.other == i).copied().collect();
+        let to_out: Vec<Pair> = backward[i].iter().filter(|p| p.other == o).copied().collect();
+        match merge_pair(&output[k], element, &to_in, &to_out, grid, settings.mu, reach_mm, &mut counts) {
+            Merged::Out => {}
+            Merged::In => changes.push((Some(k), element.clone())),
+            Merged::Stitched(e) => changes.push((Some(k), e)),
+        }
+    }
+    // Nothing goes in that would cross what is there: the print would not
+    // be sound.
+    let mut built: HashMap<usize, Faces> = HashMap::new();
+    for (replaces, element) in changes {
+        let faces = Faces::new([&element]);
+        let footprint = element.footprint();
+        let others: Vec<usize> =
+            (0..output.len()).filter(|&k| Some(k) != replaces && overlaps(output[k].footprint(), footprint)).collect();
+        let crosses =
+            others.iter().any(|&k| faces.intersects(built.entry(k).or_insert_with(|| Faces::new([&output[k]]))));
+        if crosses {
+            counts.collided += 1;
+            continue;
+        }
+        match replaces {
+            Some(k) => {
+                built.insert(k, faces);
+                output[k] = element;
+            }
+            None => {
+                built.insert(output.len(), faces);
+                output.push(element);
+            }
+        }
+    }
+    counts
+}
+
+/// Moves `element` halfway to its pairs' points (the paper's equation 5),
+/// holding the vertices `anchored` near where they are and those `fixed`
+/// exactly there.
+fn meet(element: &mut Element, pairs: &[Pair], anchored: impl Fn(DVec3) -> bool, fixed: &[bool], mu: f64) {
+    let mut constraints: Vec<Constraint> = pairs
+        .iter()
+        .map(|p| Constraint {
+            vertex: p.vertex,
+            target_mm: 0.5 * (element.vertices[p.vertex as usize] + p.point),
+            weight: mu,
+        })
+        .collect();
+    let paired: std::collections::HashSet<u32> = pairs.iter().map(|p| p.vertex).collect();
+    constraints.extend(
+        (0..element.vertices.len() as u32)
+            .filter(|v| !paired.contains(v) && anchored(element.vertices[*v as usize]))
+            .map(|v| Constraint { vertex: v, target_mm: element.vertices[v as usize], weight: ANCHOR_WEIGHT * mu }),
+    );
+    deform(element, &constraints, |v| fixed[v as usize]);
+}
+
+enum Merged {
+    Out,
+    In,
+    Stitched(Element),
+}
+
+/// One output element and the swatch element corresponding to it, made
+/// one: either stays whole where the other has nothing of its own, or both
+/// are deformed to meet (the paper's equation 5) and stitched.
+#[allow(clippy::too_many_arguments)]
+fn merge_pair(
+    c_out: &Element,
+    c_in: &Element,
+    to_in: &[Pair],
+    to_out: &[Pair],
+    grid: &Grid,
+    mu: f64,
+    reach_mm: f64,
+    counts: &mut MergeCounts,
+) -> Merged {
+    let out_home = c_out.vertices.iter().filter(|&&v| matches!(grid.zone(v), Zone::Old | Zone::Outside)).count();
+    let in_home = c_in.vertices.iter().filter(|&&v| grid.zone(v) == Zone::New).count();
+    if out_home == 0 {
+        counts.replaced += 1;
+        return Merged::In;
+    }
+    if in_home == 0 {
+        counts.kept += 1;
+        return Merged::Out;
+    }
+    // Whole elements stay exact; only the two about to be stitched move.
+    // Of a long output element (a thread), only the part near the patch
+    // moves or is cut: the rest is done.
+    let (mut c_out, mut c_in) = (c_out.clone(), c_in.clone());
+    let fixed: Vec<bool> = c_out.vertices.iter().map(|&v| !grid.near_footprint(v, WORK_CELLS)).collect();
+    meet(&mut c_out, to_in, |v| !matches!(grid.zone(v), Zone::New | Zone::Overlap), &fixed, mu);
+    let free = vec![false; c_in.vertices.len()];
+    meet(&mut c_in, to_out, |v| grid.zone(v) == Zone::New, &free, mu);
+    match cut_and_stitch(&c_out, &c_in, grid, reach_mm) {
+        Some(joined) => {
+            counts.stitched += 1;
+            Merged::Stitched(joined)
+        }
+        None => {
+            counts.unstitched += 1;
+            if in_home > out_home { Merged::In } else { Merged::Out }
+        }
+    }
+}
+
+/// Cuts the output element along a minimum cut and the swatch's where it
+/// is not covered by what stays, then stitches the two.
+fn cut_and_stitch(c_out: &Element, c_in: &Element, grid: &Grid, reach_mm: f64) -> Option<Element> {
+    let c = grid.cell_mm;
+    let zones: Vec<Zone> = (0..c_out.triangles.len()).map(|f| grid.zone(c_out.face_centre(f))).collect();
+    // Only triangles over the patch take part in the cut; the rest stay.
+    let active: Vec<u32> =
+        (0..c_out.triangles.len() as u32).filter(|&f| matches!(zones[f as usize], Zone::New | Zone::Overlap)).collect();
+    let mut node = vec![u32::MAX; c_out.triangles.len()];
+    for (k, &f) in active.iter().enumerate() {
+        node[f as usize] = k as u32;
+    }
+    let nearby: Vec<u32> = (0..c_out.triangles.len() as u32)
+        .filter(|&f| grid.near_footprint(c_out.face_centre(f as usize), WORK_CELLS + reach_mm / c))
+        .collect();
+    let out_faces =
+        Faces::new([&c_out.subset(|f| grid.near_footprint(c_out.face_centre(f), WORK_CELLS + reach_mm / c))]);
+    let in_faces = Faces::new([c_in]);
+    // The swatch's faces that the output covers, and the frontier of them.
+    let matched: Vec<bool> = (0..c_in.triangles.len())
+        .map(|f| out_faces.closest(c_in.face_centre(f)).is_some_and(|h| h.distance_mm <= reach_mm))
+        .collect();
+    let in_neighbours = c_in.face_neighbours();
+    let frontier: Vec<bool> = (0..c_in.triangles.len())
+        .map(|f| matched[f] && in_neighbours[f].iter().any(|&g| !matched[g as usize]))
+        .collect();
+    let mut distance = vec![4.0 * reach_mm; c_out.vertices.len()];
+    let mut sink_vertex = vec![false; c_out.vertices.len()];
+    for &f in &active {
+        for v in c_out.triangles[f as usize] {
+            let Some(h) = in_faces.closest(c_out.vertices[v as usize]) else { continue };
+            distance[v as usize] = h.distance_mm;
+            sink_vertex[v as usize] = h.distance_mm <= reach_mm
+                && (grid.zone(c_in.face_centre(h.face as usize)) == Zone::New || frontier[h.face as usize]);
+        }
+    }
+    let drop: Vec<(u32, i64)> = active
+        .iter()
+        .enumerate()
+        .filter(|&(_, &f)| c_out.triangles[f as usize].iter().any(|&v| sink_vertex[v as usize]))
+        .map(|(k, _)| (k as u32, FORCED))
+        .collect();
+    if drop.is_empty() {
+        return None;
+    }
+    // The paper's equation 7, lengths in grid cells, scaled to integers. An
+    // edge to a triangle outside the graph ties its neighbour to the side
+    // that stays.
+    let neighbours = c_out.face_neighbours();
+    let mut weights = Vec::new();
+    let mut keep = Vec::new();
+    for &f in &active {
+        for &g in &neighbours[f as usize] {
+            let shared: Vec<u32> = c_out.triangles[f as usize]
+                .iter()
+                .copied()
+                .filter(|v| c_out.triangles[g as usize].contains(v))
+                .collect();
+            let [a, b] = shared[..] else { continue };
+            let (pa, pb) = (c_out.vertices[a as usize], c_out.vertices[b as usize]);
+            let w = (1.0 + pa.distance(pb) / c) * (1.0 + (distance[a as usize] + distance[b as usize]) / c);
+            let w = (w * 100.0).round().max(1.0) as i64;
+            match node[g as usize] {
+                u32::MAX => keep.push((node[f as usize], w)),
+                k if k > node[f as usize] => weights.push((node[f as usize], k, w)),
+                _ => {}
+            }
+        }
+    }
+    let cut = min_cut_keep(active.len(), &weights, &keep, &drop)?;
+    let mut kept_out = vec![true; c_out.triangles.len()];
+    for (k, &f) in active.iter().enumerate() {
+        kept_out[f as usize] = cut[k];
+    }
+    // The swatch's element stays wherever the output's does not.
+    let kept_in: Vec<bool> = (0..c_in.triangles.len())
+        .map(|f| match out_faces.closest(c_in.face_centre(f)) {
+            Some(h) if h.distance_mm <= reach_mm => !kept_out[nearby[h.face as usize] as usize],
+            _ => true,
+        })
+        .collect();
+    let a = without_specks(c_out.subset(|f| kept_out[f]));
+    let b = without_specks(c_in.subset(|f| kept_in[f]));
+    if a.triangles.is_empty() || b.triangles.is_empty() {
+        return None;
+    }
+    stitch(&a, &b, 3.0 * reach_mm)
+}
+
+fn without_specks(element: Element) -> Element {
+    let mut out = Element::default();
+    for part in element.parts() {
+        if part.triangles.len() >= SPECK_TRIANGLES {
+            out.append(&part);
+        }
+    }
+    out
+}

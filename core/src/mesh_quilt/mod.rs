@@ -1,0 +1,34 @@
+//! Mesh quilting (the mesh-quilting paper): a surface covered with 3D
+//! geometric texture grown from a small mesh swatch. This first stage
+//! quilts the plane: swatches ([`Swatch`], [`builtin_swatch`]), seeds on a
+//! grid, geometry matching over translations, element correspondences,
+//! Laplacian deformation ([`deform`]), merging along a graph cut
+//! ([`min_cut_keep`]) and stitching ([`quilt_plane`]).
+
+mod builtin;
+mod cut;
+mod deform;
+mod element;
+mod error;
+mod faces;
+mod merge;
+mod planar;
+mod product;
+mod settings;
+mod shapes;
+mod stitch;
+mod swatch;
+
+pub use builtin::{SWATCH_NAMES, builtin_swatch};
+pub use cut::{FORCED, min_cut_keep};
+pub use deform::{Constraint, deform};
+pub use element::Element;
+pub use error::QuiltError;
+pub use faces::{Closest, Faces};
+pub use merge::MergeCounts;
+pub use planar::{MAX_QUILT_TRIANGLES, Quilt, QuiltCounts, quilt_plane};
+pub use product::{Base, make_product, parse_base};
+pub use settings::{MAX_CELLS_ACROSS, MIN_CELLS_ACROSS, Settings};
+pub use shapes::{lathe, lathe_ring, torus, tube};
+pub use stitch::stitch;
+pub use swatch::{MAX_SWATCH_TRIANGLES, Swatch};

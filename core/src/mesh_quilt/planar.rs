@@ -1,0 +1,325 @@
+//! Planar mesh quilting (the paper's section 2): the output grows patch by
+//! patch from the most constrained grid cell; each patch is the swatch at
+//! the translation that best matches what is already there, merged in
+//! element by element.
+
+use std::collections::HashMap;
+
+use glam::{DVec2, DVec3};
+use rayon::prelude::*;
+
+use super::faces::Faces;
+use super::merge::{MergeCounts, merge_patch};
+use super::{Element, QuiltError, Settings, Swatch};
+use crate::control::Control;
+use crate::random::SplitMix64;
+
+/// The most triangles a quilt may have.
+pub const MAX_QUILT_TRIANGLES: usize = 4_000_000;
+
+/// Output vertices sampled for the matching cost of one placement: enough
+/// to tell placements apart, few enough to try dozens per patch.
+const MATCH_SAMPLES: usize = 400;
+
+/// Cells at the swatch's edge that a patch overlaps but does not claim:
+/// elements there are often cut short by the swatch's own border.
+pub(super) const MARGIN_CELLS: i64 = 1;
+
+/// What quilting made.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct Quilt {
+    /// The output elements, each closed.
+    pub elements: Vec<Element>,
+    /// What happened on the way.
+    pub counts: QuiltCounts,
+}
+
+/// Counts of what quilting did, for reports and tests.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct QuiltCounts {
+    /// Patches placed.
+    pub patches: usize,
+    /// Element merges: copied whole, replaced, stitched, and stitches given up.
+    pub merges: MergeCounts,
+    /// Elements left out at the end because they lay mostly outside the area.
+    pub outside: usize,
+    /// Fragments removed at the end: pieces far smaller than any swatch element.
+    pub fragments: usize,
+}
+
+/// Where a point lies for one patch.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(super) enum Zone {
+    /// Made by earlier patches, outside this one.
+    Old,
+    /// Made by earlier patches and covered by this one.
+    Overlap,
+    /// Covered by this patch for the first time.
+    New,
+    /// Neither.
+    Outside,
+}
+
+/// The output's grid and the patch being merged.
+pub(super) struct Grid {
+    pub cell_mm: f64,
+    nx: i64,
+    ny: i64,
+    processed: Vec<bool>,
+    /// The patch's claimed cells, `[low, high)` in cells.
+    pub footprint: [i64; 4],
+}
+
+impl Grid {
+    fn cell(&self, p: DVec2) -> (i64, i64) {
+        ((p.x / self.cell_mm).floor() as i64, (p.y / self.cell_mm).floor() as i64)
+    }
+
+    fn inside(&self, (i, j): (i64, i64)) -> bool {
+        (0..self.nx).contains(&i) && (0..self.ny).contains(&j)
+    }
+
+    fn is_processed(&self, c: (i64, i64)) -> bool {
+        self.inside(c) && self.processed[(c.1 * self.nx + c.0) as usize]
+    }
+
+    fn in_footprint(&self, (i, j): (i64, i64)) -> bool {
+        let [i0, j0, i1, j1] = self.footprint;
+        self.inside((i, j)) && (i0..i1).contains(&i) && (j0..j1).contains(&j)
+    }
+
+    /// Whether `p` lies over the patch's footprint grown by `cells` cells.
+    pub fn near_footprint(&self, p: DVec3, cells: f64) -> bool {
+        let [i0, j0, i1, j1] = self.footprint;
+        let (x, y) = (p.x / self.cell_mm, p.y / self.cell_mm);
+        x >= i0 as f64 - cells && x <= i1 as f64 + cells && y >= j0 as f64 - cells && y <= j1 as f64 + cells
+    }
+
+    /// Where `p` lies for the current patch.
+    pub fn zone(&self, p: DVec3) -> Zone {
+        let c = self.cell(p.truncate());
+        match (self.is_processed(c), self.in_footprint(c)) {
+            (true, true) => Zone::Overlap,
+            (true, false) => Zone::Old,
+            (false, true) => Zone::New,
+            (false, false) => Zone::Outside,
+        }
+    }
+
+    /// The unprocessed cell with the most processed neighbours.
+    fn seed(&self) -> Option<(i64, i64)> {
+        let mut best: Option<((i64, i64), usize)> = None;
+        for j in 0..self.ny {
+            for i in 0..self.nx {
+                if self.is_processed((i, j)) {
+                    continue;
+                }
+                let around = (-1..=1)
+                    .flat_map(|dj| (-1..=1).map(move |di| (i + di, j + dj)))
+                    .filter(|&c| self.is_processed(c))
+                    .count();
+                if best.is_none_or(|(_, n)| around > n) {
+                    best = Some(((i, j), around));
+                }
+            }
+        }
+        best.map(|(c, _)| c)
+    }
+}
+
+/// The swatch indexed for matching: its faces, and its vertices by cell.
+struct Input {
+    faces: Faces,
+    by_cell: HashMap<(i64, i64), Vec<(DVec3, DVec3)>>,
+    cells: (i64, i64),
+}
+
+/// Quilts a `width_mm` × `depth_mm` area of the plane with `swatch`
+/// (already scaled), from `(0, 0)`.
+pub fn quilt_plane(
+    swatch: &Swatch,
+    width_mm: f64,
+    depth_mm: f64,
+    settings: &Settings,
+    control: &Control,
+) -> Result<Quilt, QuiltError> {
+    settings.validate()?;
+    crate::setting::positive_mm("the width", width_mm)?;
+    crate::setting::positive_mm("the depth", depth_mm)?;
+    let size = swatch.size_mm();
+    let estimate = (swatch.triangle_count() as f64 * width_mm * depth_mm / (size.x * size.y)) as usize;
+    if estimate > MAX_QUILT_TRIANGLES {
+        return Err(QuiltError::OutputTooLarge { triangles: estimate, max: MAX_QUILT_TRIANGLES });
+    }
+    let cell_mm = size.x.min(size.y) / settings.cells_across as f64;
+    let input = index_input(swatch, cell_mm);
+    let mut grid = Grid {
+        cell_mm,
+        nx: (width_mm / cell_mm).ceil() as i64,
+        ny: (depth_mm / cell_mm).ceil() as i64,
+        processed: Vec::new(),
+        footprint: [0; 4],
+    };
+    grid.processed = vec![false; (grid.nx * grid.ny) as usize];
+    let reach_mm = 3.0 * swatch.elements.iter().map(Element::mean_edge_mm).sum::<f64>() / swatch.elements.len() as f64;
+    let (sx, sy) = input.cells;
+    let half = ((sx.min(sy) - 2 * MARGIN_CELLS - 1) / 4).max(0);
+    let mut random = SplitMix64::new(settings.seed);
+    let mut quilt = Quilt::default();
+    let total = grid.processed.len() as f32;
+    while let Some(seed) = grid.seed() {
+        control.check()?;
+        let window: Vec<(i64, i64)> = (-half..=half)
+            .flat_map(|dj| (-half..=half).map(move |di| (seed.0 + di, seed.1 + dj)))
+            .filter(|&c| grid.is_processed(c))
+            .collect();
+        let (a, b, offset) =
+            place(&input, &quilt.elements, &grid, &window, seed, half, settings, reach_mm, &mut random);
+        grid.footprint = [a + MARGIN_CELLS, b + MARGIN_CELLS, a + sx - MARGIN_CELLS, b + sy - MARGIN_CELLS];
+        let counts = merge_patch(&mut quilt.elements, swatch, &grid, offset, settings, reach_mm);
+        quilt.counts.merges.add(&counts);
+        let [i0, j0, i1, j1] = grid.footprint;
+        for j in j0.max(0)..j1.min(grid.ny) {
+            for i in i0.max(0)..i1.min(grid.nx) {
+                grid.processed[(j * grid.nx + i) as usize] = true;
+            }
+        }
+        quilt.counts.patches += 1;
+        control.report(grid.processed.iter().filter(|&&p| p).count() as f32 / total);
+    }
+    finish(&mut quilt, swatch, width_mm, depth_mm);
+    Ok(quilt)
+}
+
+fn index_input(swatch: &Swatch, cell_mm: f64) -> Input {
+    let mut by_cell: HashMap<(i64, i64), Vec<(DVec3, DVec3)>> = HashMap::new();
+    for e in &swatch.elements {
+        for (v, n) in e.vertices.iter().zip(e.vertex_normals()) {
+            let c = ((v.x / cell_mm).floor() as i64, (v.y / cell_mm).floor() as i64);
+            by_cell.entry(c).or_default().push((*v, n));
+        }
+    }
+    let size = swatch.size_mm();
+    let cells = ((size.x / cell_mm).floor() as i64, (size.y / cell_mm).floor() as i64);
+    Input { faces: Faces::new(&swatch.elements), by_cell, cells }
+}
+
+/// The matching cost of one pair of a point and its closest face (the
+/// paper's equation 1), with distance measured in grid cells.
+fn pair_cost(distance_mm: f64, normal: DVec3, face_normal: DVec3, lambda: f64, cell_mm: f64) -> f64 {
+    (1.0 + lambda * distance_mm / cell_mm) * (1.0 + (normal - face_normal).length())
+}
+
+/// The best translation of the swatch for the patch around `seed`: the grid
+/// offset `(a, b)` in cells, and the translation in mm refined from it.
+#[allow(clippy::too_many_arguments)]
+fn place(
+    input: &Input,
+    output: &[Element],
+    grid: &Grid,
+    window: &[(i64, i64)],
+    seed: (i64, i64),
+    half: i64,
+    settings: &Settings,
+    reach_mm: f64,
+    random: &mut SplitMix64,
+) -> (i64, i64, DVec2) {
+    let (sx, sy) = input.cells;
+    let c = grid.cell_mm;
+    let low = (seed.0 + half + MARGIN_CELLS + 1 - sx, seed.1 + half + MARGIN_CELLS + 1 - sy);
+    let high = (seed.0 - half - MARGIN_CELLS, seed.1 - half - MARGIN_CELLS);
+    let candidates: Vec<(i64, i64)> = (low.1..=high.1).flat_map(|b| (low.0..=high.0).map(move |a| (a, b))).collect();
+    // The output near the window: its vertices in the window, sampled, and
+    // its faces for the reverse term.
+    let in_window = |p: DVec3| window.contains(&grid.cell(p.truncate()));
+    let window_box = window_box(window, c);
+    let near: Vec<&Element> = output.iter().filter(|e| overlaps(e.footprint(), window_box)).collect();
+    let mut samples: Vec<(DVec3, DVec3)> = Vec::new();
+    for e in &near {
+        samples.extend(e.vertices.iter().zip(e.vertex_normals()).filter(|(v, _)| in_window(**v)).map(|(v, n)| (*v, n)));
+    }
+    let stride = samples.len().div_ceil(MATCH_SAMPLES).max(1);
+    let samples: Vec<(DVec3, DVec3)> = samples.into_iter().step_by(stride).collect();
+    let output_faces = Faces::new(near.iter().copied());
+    let lambda = settings.lambda;
+    let cost = |&(a, b): &(i64, i64)| -> f64 {
+        if window.is_empty() {
+            return 0.0;
+        }
+        let t = DVec3::new(a as f64 * c, b as f64 * c, 0.0);
+        let forward: f64 = samples
+            .iter()
+            .map(|&(p, n)| match input.faces.closest(p - t) {
+                Some(hit) => pair_cost(hit.distance_mm, n, hit.normal, lambda, c),
+                None => pair_cost(2.0 * c, n, n, lambda, c),
+            })
+            .sum::<f64>()
+            / samples.len().max(1) as f64;
+        let mut reverse = Vec::new();
+        for &(i, j) in window {
+            if let Some(points) = input.by_cell.get(&(i - a, j - b)) {
+                reverse.extend(points.iter().map(|&(p, n)| (p + t, n)));
+            }
+        }
+        let stride = reverse.len().div_ceil(MATCH_SAMPLES).max(1);
+        let reverse: Vec<f64> = reverse
+            .iter()
+            .step_by(stride)
+            .map(|&(p, n)| match output_faces.closest(p) {
+                Some(hit) => pair_cost(hit.distance_mm, n, hit.normal, lambda, c),
+                None => pair_cost(2.0 * c, n, n, lambda, c),
+            })
+            .collect();
+        forward + reverse.iter().sum::<f64>() / reverse.len().max(1) as f64
+    };
+    let costs: Vec<f64> = candidates.par_iter().map(cost).collect();
+    let best = costs.iter().copied().fold(f64::INFINITY, f64::min);
+    let good: Vec<usize> =
+        (0..candidates.len()).filter(|&k| costs[k] <= best * (1.0 + settings.tolerance) + 1e-9).collect();
+    let (a, b) = candidates[good[random.below(good.len() as u64) as usize]];
+    // Refined off the grid by the mean offset of the close pairs: a swatch
+    // whose period is not a whole number of cells still lines up.
+    let mut t = DVec2::new(a as f64 * c, b as f64 * c);
+    for _ in 0..2 {
+        let (sum, count) = samples.iter().fold((DVec2::ZERO, 0usize), |(s, k), &(p, _)| {
+            match input.faces.closest(p - t.extend(0.0)) {
+                Some(hit) if hit.distance_mm < reach_mm => (s + (p - t.extend(0.0) - hit.point_mm).truncate(), k + 1),
+                _ => (s, k),
+            }
+        });
+        if count < 8 {
+            break;
+        }
+        let step = sum / count as f64;
+        t += step.clamp_length_max(c);
+    }
+    (a, b, t)
+}
+
+fn window_box(window: &[(i64, i64)], c: f64) -> (DVec2, DVec2) {
+    window.iter().fold((DVec2::INFINITY, DVec2::NEG_INFINITY), |(lo, hi), &(i, j)| {
+        (lo.min(DVec2::new(i as f64, j as f64) * c), hi.max(DVec2::new((i + 1) as f64, (j + 1) as f64) * c))
+    })
+}
+
+/// Whether two boxes seen from above overlap.
+pub(super) fn overlaps(a: (DVec2, DVec2), b: (DVec2, DVec2)) -> bool {
+    a.0.x <= b.1.x && b.0.x <= a.1.x && a.0.y <= b.1.y && b.0.y <= a.1.y
+}
+
+/// Leaves out elements lying mostly outside the area, open ones, and
+/// fragments far smaller than the swatch's smallest element.
+fn finish(quilt: &mut Quilt, swatch: &Swatch, width_mm: f64, depth_mm: f64) {
+    let volume = |e: &Element| e.to_mesh().signed_volume().abs();
+    let smallest = swatch.elements.iter().map(volume).fold(f64::INFINITY, f64::min);
+    let before = quilt.elements.len();
+    quilt.elements.retain(|e| {
+        let (lo, hi) = e.footprint();
+        let centre = 0.5 * (lo + hi);
+        (0.0..=width_mm).contains(&centre.x) && (0.0..=depth_mm).contains(&centre.y)
+    });
+    quilt.counts.outside = before - quilt.elements.len();
+    let before = quilt.elements.len();
+    quilt.elements.retain(|e| e.is_closed() && volume(e) >= 0.25 * smallest);
+    quilt.counts.fragments = before - quilt.elements.len();
+}

@@ -1,0 +1,75 @@
+//! [`make_product`]: a quilt as the [`Product`] every mode returns, its
+//! elements one mesh of separate closed shells, with its figures.
+
+use super::{QuiltError, Settings, Swatch, quilt_plane};
+use crate::control::Control;
+use crate::mesh::Mesh;
+use crate::product::{Fact, Product};
+
+/// What the quilt covers.
+#[derive(Clone, Copy, Debug, PartialEq)]
+#[non_exhaustive]
+pub enum Base {
+    /// A `width_mm` × `depth_mm` area of the plane.
+    Plane {
+        /// Along `x`, mm.
+        width_mm: f64,
+        /// Along `y`, mm.
+        depth_mm: f64,
+    },
+}
+
+/// Reads `plane:WIDTHxDEPTH` (mm).
+///
+/// ```
+/// use tracery_core::mesh_quilt::{Base, parse_base};
+/// assert_eq!(parse_base("plane:60x40").unwrap(), Base::Plane { width_mm: 60.0, depth_mm: 40.0 });
+/// assert!(parse_base("plane:60").is_err());
+/// ```
+pub fn parse_base(spec: &str) -> Result<Base, QuiltError> {
+    let bad = || QuiltError::BadBase(spec.to_string());
+    let size = spec.strip_prefix("plane:").ok_or_else(bad)?;
+    let (w, d) = size.split_once('x').ok_or_else(bad)?;
+    let (width_mm, depth_mm) =
+        (w.trim().parse::<f64>().map_err(|_| bad())?, d.trim().parse::<f64>().map_err(|_| bad())?);
+    crate::setting::positive_mm("the plane's width", width_mm)?;
+    crate::setting::positive_mm("the plane's depth", depth_mm)?;
+    Ok(Base::Plane { width_mm, depth_mm })
+}
+
+/// Quilts `base` with `swatch` at the settings' scale: the elements as one
+/// mesh of closed shells (a body each), and the counts in its facts.
+pub fn make_product(
+    swatch: &Swatch,
+    base: Base,
+    settings: &Settings,
+    control: &Control,
+) -> Result<Product, QuiltError> {
+    settings.validate()?;
+    let mut product = Product::default();
+    let swatch = swatch.scaled(settings.scale);
+    let Base::Plane { width_mm, depth_mm } = base;
+    let quilt = product.timings.time("quilt", || quilt_plane(&swatch, width_mm, depth_mm, settings, control))?;
+    let mut mesh = Mesh::default();
+    for e in &quilt.elements {
+        mesh.append(&e.to_mesh());
+    }
+    let closed = quilt.elements.iter().filter(|e| e.is_closed()).count();
+    let m = &quilt.counts.merges;
+    product.topology.components = quilt.elements.len();
+    let facts = &mut product.facts;
+    facts.push("elements", Fact::Count(quilt.elements.len()));
+    facts.push("closed_elements", Fact::Count(closed));
+    facts.push("swatch_elements", Fact::Count(swatch.elements.len()));
+    facts.push("patches", Fact::Count(quilt.counts.patches));
+    facts.push("stitched", Fact::Count(m.stitched));
+    facts.push("unstitched", Fact::Count(m.unstitched));
+    facts.push("replaced_whole", Fact::Count(m.replaced));
+    facts.push("kept_whole", Fact::Count(m.kept));
+    facts.push("added_whole", Fact::Count(m.added));
+    facts.push("left_out_crossing", Fact::Count(m.collided));
+    facts.push("fragments_removed", Fact::Count(quilt.counts.fragments));
+    facts.push("faces", Fact::Count(mesh.triangles.len()));
+    product.mesh_mm = Some(mesh);
+    Ok(product)
+}

@@ -1,0 +1,70 @@
+//! [`Settings`]: everything a person chooses for mesh quilting, declared
+//! once for the document, the command line and the app.
+
+use serde::{Deserialize, Serialize};
+
+use crate::setting::{InvalidSetting, positive};
+
+/// Mesh quilting's settings, with the one set of defaults
+/// (`docs/mesh-quilting.md` explains them).
+///
+/// ```
+/// use tracery_core::mesh_quilt::Settings;
+/// let mut settings = Settings::default();
+/// assert!(settings.validate().is_ok());
+/// settings.scale = 0.0;
+/// assert!(settings.validate().is_err());
+/// ```
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(default)]
+#[non_exhaustive]
+pub struct Settings {
+    /// The swatch is made this many times larger (the paper's `s`).
+    pub scale: f64,
+    /// Grid cells across the swatch's shorter side: the step of the
+    /// translations tried when matching, and of the growing front.
+    pub cells_across: usize,
+    /// Weight of distance against normal difference in the matching cost
+    /// (the paper's λ, per grid cell).
+    pub lambda: f64,
+    /// Weight of the position constraints against keeping the shape when
+    /// elements are deformed to meet (the paper's μ).
+    pub mu: f64,
+    /// Placements whose cost is within this fraction of the best are
+    /// equally good; one is picked at random, for variety.
+    pub tolerance: f64,
+    /// Which random choices the synthesis makes: another seed, another quilt.
+    pub seed: u64,
+}
+
+impl Default for Settings {
+    fn default() -> Self {
+        Settings { scale: 1.0, cells_across: 12, lambda: 1.0, mu: 1.0, tolerance: 0.1, seed: 1 }
+    }
+}
+
+/// The fewest grid cells across a swatch: fewer leaves no room for an
+/// overlap between patches.
+pub const MIN_CELLS_ACROSS: usize = 6;
+
+/// The most grid cells across a swatch.
+pub const MAX_CELLS_ACROSS: usize = 64;
+
+impl Settings {
+    /// Checks every number is in range.
+    pub fn validate(&self) -> Result<(), InvalidSetting> {
+        positive("the scale", self.scale, "")?;
+        if !(MIN_CELLS_ACROSS..=MAX_CELLS_ACROSS).contains(&self.cells_across) {
+            return Err(InvalidSetting(format!(
+                "cells across the swatch must be {MIN_CELLS_ACROSS} to {MAX_CELLS_ACROSS}, not {}",
+                self.cells_across
+            )));
+        }
+        positive("lambda", self.lambda, "")?;
+        positive("mu", self.mu, "")?;
+        if !(self.tolerance.is_finite() && (0.0..=1.0).contains(&self.tolerance)) {
+            return Err(InvalidSetting(format!("the tolerance must be 0 to 1, not {}", self.tolerance)));
+        }
+        Ok(())
+    }
+}
