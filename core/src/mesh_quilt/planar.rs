@@ -319,6 +319,14 @@ fn finish(quilt: &mut Quilt, swatch: &Swatch, width_mm: f64, depth_mm: f64) {
         (0.0..=width_mm).contains(&centre.x) && (0.0..=depth_mm).contains(&centre.y)
     });
     quilt.counts.outside = before - quilt.elements.len();
+    // Deformation may push a stitched element a hair out of the shell the
+    // swatch filled; it goes back in, so what sat on the base still does.
+    let height = swatch.size_mm().z;
+    for e in &mut quilt.elements {
+        for v in &mut e.vertices {
+            v.z = v.z.clamp(0.0, height);
+        }
+    }
     let before = quilt.elements.len();
     quilt.elements.retain(|e| e.is_closed() && volume(e) >= 0.25 * smallest);
     quilt.counts.fragments = before - quilt.elements.len();

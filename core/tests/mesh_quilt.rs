@@ -1,0 +1,233 @@
+//! Mesh quilting on the plane, checked apart from the code under test:
+//! closedness by counting directed edges here, crossings by a segment–
+//! triangle test written here, element integrity by volume against the
+//! swatch's elements, and stitching by threads that run on past the swatch.
+
+use std::collections::HashMap;
+
+use glam::DVec3;
+use tracery_core::control::Control;
+use tracery_core::mesh::Mesh;
+use tracery_core::mesh_quilt::{
+    Element, FORCED, QuiltError, Settings, Swatch, builtin_swatch, min_cut_keep, quilt_plane,
+};
+
+/// Every directed edge used once, and its reverse once.
+fn closed(e: &Element) -> bool {
+    let mut count: HashMap<(u32, u32), i32> = HashMap::new();
+    for t in &e.triangles {
+        for k in 0..3 {
+            *count.entry((t[k], t[(k + 1) % 3])).or_default() += 1;
+        }
+    }
+    count.iter().all(|(&(a, b), &n)| n == 1 && count.get(&(b, a)) == Some(&1))
+}
+
+fn volume(e: &Element) -> f64 {
+    e.triangles
+        .iter()
+        .map(|t| {
+            let [a, b, c] = t.map(|i| e.vertices[i as usize]);
+            a.dot(b.cross(c)) / 6.0
+        })
+        .sum()
+}
+
+/// Whether segment `p`–`q` passes through triangle `t` (Möller–Trumbore).
+fn segment_hits(p: DVec3, q: DVec3, t: [DVec3; 3]) -> bool {
+    let d = q - p;
+    let (e1, e2) = (t[1] - t[0], t[2] - t[0]);
+    let h = d.cross(e2);
+    let a = e1.dot(h);
+    if a.abs() < 1e-12 {
+        return false;
+    }
+    let s = p - t[0];
+    let u = s.dot(h) / a;
+    let qv = s.cross(e1);
+    let v = d.dot(qv) / a;
+    let along = e2.dot(qv) / a;
+    (0.0..=1.0).contains(&u) && v >= 0.0 && u + v <= 1.0 && (0.0..=1.0).contains(&along)
+}
+
+fn boxes_meet(a: (DVec3, DVec3), b: (DVec3, DVec3)) -> bool {
+    a.0.cmple(b.1).all() && b.0.cmple(a.1).all()
+}
+
+/// Whether two elements' surfaces cross: an edge of one through a triangle of the other.
+fn cross(a: &Element, b: &Element) -> bool {
+    if !boxes_meet(a.bounds(), b.bounds()) {
+        return false;
+    }
+    let tris =
+        |e: &Element| -> Vec<[DVec3; 3]> { e.triangles.iter().map(|t| t.map(|i| e.vertices[i as usize])).collect() };
+    let tri_box = |t: &[DVec3; 3]| (t[0].min(t[1]).min(t[2]), t[0].max(t[1]).max(t[2]));
+    let (ta, tb) = (tris(a), tris(b));
+    for x in &ta {
+        for y in &tb {
+            if !boxes_meet(tri_box(x), tri_box(y)) {
+                continue;
+            }
+            for k in 0..3 {
+                if segment_hits(x[k], x[(k + 1) % 3], *y) || segment_hits(y[k], y[(k + 1) % 3], *x) {
+                    return true;
+                }
+            }
+        }
+    }
+    false
+}
+
+fn crossing_pairs(elements: &[Element]) -> usize {
+    let mut n = 0;
+    for i in 0..elements.len() {
+        for j in i + 1..elements.len() {
+            n += cross(&elements[i], &elements[j]) as usize;
+        }
+    }
+    n
+}
+
+#[test]
+fn builtin_swatches_are_closed_elements_that_never_cross() {
+    for name in tracery_core::mesh_quilt::SWATCH_NAMES {
+        let swatch = builtin_swatch(name).unwrap();
+        assert!(swatch.elements.len() >= 8, "{name}");
+        for (k, e) in swatch.elements.iter().enumerate() {
+            assert!(closed(e), "{name} element {k} is open");
+            assert!(volume(e) > 0.0, "{name} element {k} faces in");
+        }
+        assert_eq!(crossing_pairs(&swatch.elements), 0, "{name}");
+        // The test sees a crossing when there is one.
+        let first = &swatch.elements[0];
+        assert!(cross(first, &first.translated(DVec3::new(0.3, 0.2, 0.1))), "{name}");
+        let size = swatch.size_mm();
+        assert!(size.z < size.x.min(size.y), "{name} lies thinnest side up: {size}");
+    }
+}
+
+#[test]
+fn a_plane_of_chain_mail_keeps_every_link_whole_and_apart() {
+    let swatch = builtin_swatch("chainmail").unwrap();
+    let quilt = quilt_plane(&swatch, 50.0, 50.0, &Settings::default(), &Control::default()).unwrap();
+    let volumes: Vec<f64> = swatch.elements.iter().map(volume).collect();
+    for (k, e) in quilt.elements.iter().enumerate() {
+        assert!(closed(e), "element {k} is open");
+        // A link, whole or stitched from two halves, has a link's volume.
+        let v = volume(e);
+        assert!(volumes.iter().any(|&s| (v / s - 1.0).abs() < 0.3), "element {k} has volume {v:.1} mm³");
+    }
+    assert_eq!(crossing_pairs(&quilt.elements), 0);
+    // The swatch has 40 links on 40 x 40 mm; 50 x 50 mm holds about 62.
+    let expected = swatch.elements.len() as f64 * 2500.0 / (swatch.size_mm().x * swatch.size_mm().y);
+    assert!(
+        quilt.elements.len() as f64 > 0.8 * expected,
+        "{} links, about {expected:.0} expected",
+        quilt.elements.len()
+    );
+}
+
+#[test]
+fn woven_threads_are_stitched_into_threads_longer_than_the_swatch() {
+    let swatch = builtin_swatch("weave").unwrap();
+    let side = swatch.size_mm().x;
+    let quilt = quilt_plane(&swatch, 60.0, 60.0, &Settings::default(), &Control::default()).unwrap();
+    assert!(quilt.counts.merges.stitched > 0);
+    assert!(quilt.elements.iter().all(closed));
+    assert_eq!(crossing_pairs(&quilt.elements), 0);
+    let long = quilt
+        .elements
+        .iter()
+        .filter(|e| {
+            let (lo, hi) = e.bounds();
+            (hi - lo).x.max((hi - lo).y) > 1.5 * side
+        })
+        .count();
+    assert!(long >= 8, "{long} threads longer than 1.5 swatches in a 60 mm square");
+}
+
+#[test]
+fn another_seed_gives_another_quilt_of_leaves() {
+    let swatch = builtin_swatch("leaves").unwrap();
+    let mut settings = Settings::default();
+    let a = quilt_plane(&swatch, 40.0, 40.0, &settings, &Control::default()).unwrap();
+    settings.seed = 2;
+    let b = quilt_plane(&swatch, 40.0, 40.0, &settings, &Control::default()).unwrap();
+    let centres = |q: &tracery_core::mesh_quilt::Quilt| -> Vec<DVec3> {
+        q.elements.iter().map(|e| e.vertices.iter().sum::<DVec3>() / e.vertices.len() as f64).collect()
+    };
+    let (ca, cb) = (centres(&a), centres(&b));
+    let moved = ca.iter().filter(|p| cb.iter().all(|q| p.distance(*q) > 0.5)).count();
+    assert!(moved > ca.len() / 2, "{moved} of {} leaves moved", ca.len());
+}
+
+#[test]
+fn bad_swatches_are_refused_in_words() {
+    let tetra = Mesh {
+        vertices: vec![[0.0, 0.0, 0.0], [4.0, 0.0, 0.0], [0.0, 4.0, 0.0], [0.0, 0.0, 1.0]],
+        triangles: vec![[0, 2, 1], [0, 1, 3], [1, 2, 3], [0, 3, 2]],
+    };
+    let open = Mesh { triangles: tetra.triangles[..3].to_vec(), ..tetra.clone() };
+    let err = Swatch::from_mesh("open", &open).unwrap_err();
+    assert!(matches!(err, QuiltError::OpenElement { .. }) && err.to_string().contains("closed"), "{err}");
+    let err = Swatch::from_mesh("empty", &Mesh::default()).unwrap_err();
+    assert!(err.to_string().contains("no triangles"), "{err}");
+    // A fin on one edge: three triangles on edge 0-1.
+    let mut fin = tetra.clone();
+    fin.vertices.push([2.0, -3.0, 0.0]);
+    fin.triangles.push([0, 1, 4]);
+    let err = Swatch::from_mesh("fin", &fin).unwrap_err();
+    assert!(err.to_string().contains("not manifold"), "{err}");
+    assert!(Swatch::from_mesh("tetra", &tetra).is_ok());
+}
+
+#[test]
+fn the_minimum_cut_is_the_cheapest_labelling() {
+    // Random small graphs against every labelling.
+    let mut state = 12345u64;
+    let mut next = |n: u64| {
+        state = state.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407);
+        (state >> 33) % n
+    };
+    for _ in 0..60 {
+        let n = 3 + next(6) as usize;
+        let mut weights = Vec::new();
+        for a in 0..n as u32 {
+            for b in a + 1..n as u32 {
+                if next(3) == 0 {
+                    weights.push((a, b, 1 + next(9) as i64));
+                }
+            }
+        }
+        let keep = vec![(0u32, FORCED), (1, 1 + next(5) as i64)];
+        let drop = vec![((n - 1) as u32, FORCED)];
+        let kept = min_cut_keep(n, &weights, &keep, &drop).unwrap();
+        let cost = |label: &[bool]| -> Option<i64> {
+            let mut c = 0;
+            for &(a, b, w) in &weights {
+                if label[a as usize] != label[b as usize] {
+                    c += w;
+                }
+            }
+            for &(t, w) in &keep {
+                if !label[t as usize] {
+                    if w == FORCED {
+                        return None;
+                    }
+                    c += w;
+                }
+            }
+            for &(t, _) in &drop {
+                if label[t as usize] {
+                    return None;
+                }
+            }
+            Some(c)
+        };
+        let best = (0..1u32 << n)
+            .filter_map(|bits| cost(&(0..n).map(|k| bits >> k & 1 == 1).collect::<Vec<_>>()))
+            .min()
+            .unwrap();
+        assert_eq!(cost(&kept), Some(best), "n {n}, weights {weights:?}");
+    }
+}

@@ -1,0 +1,70 @@
+//! `tracery quilt` end to end: the STL is checked apart from the mesh code
+//! (closed, consistently oriented, its shells counted from the file) and
+//! bad input fails with one line and leaves no file.
+
+#[path = "common/cli.rs"]
+mod cli;
+#[path = "common/stl.rs"]
+mod stl;
+use cli::{field, report_of, tempdir, tracery};
+use stl::{check_stl, stl_vertices};
+
+fn path(p: &std::path::Path) -> String {
+    p.display().to_string()
+}
+
+#[test]
+fn list_swatches_prints_every_builtin() {
+    let out = tracery().args(["list", "--swatches"]).output().unwrap();
+    assert!(out.status.success());
+    let text = String::from_utf8(out.stdout).unwrap();
+    for name in tracery_core::mesh_quilt::SWATCH_NAMES {
+        assert!(text.lines().any(|l| l.starts_with(name)), "{name} missing from:\n{text}");
+    }
+}
+
+#[test]
+fn a_plane_of_rivets_is_one_closed_body_per_element() {
+    let dir = tempdir("quilt-rivets");
+    let stl = dir.join("r.stl");
+    let json = report_of(
+        "quilt",
+        &["--swatch", "rivets", "--base", "plane:50x40", "--scale", "0.8", "--stl", &path(&stl)],
+        &dir.join("r.json"),
+    );
+    let check = check_stl(&stl);
+    assert_eq!((check.open_edges, check.misoriented_edges), (0, 0), "{check:?}");
+    let elements: usize = field(&json, "elements").parse().unwrap();
+    assert_eq!(check.shells, elements, "{json}");
+    assert_eq!(field(&json, "closed_elements"), field(&json, "elements"), "{json}");
+    assert!(elements >= 25, "{json}");
+    assert!(json.contains("\"timings_ms\"") && json.contains("\"warnings\""), "{json}");
+    // Elements lie on the plane's area, give or take half an element.
+    for [x, y, z] in stl_vertices(&stl) {
+        assert!((-4.0..=54.0).contains(&x) && (-4.0..=44.0).contains(&y) && z >= -1e-6, "vertex at ({x}, {y}, {z})");
+    }
+}
+
+#[test]
+fn bad_input_fails_with_one_line_and_no_file() {
+    let dir = tempdir("quilt-bad");
+    let open = dir.join("open.obj");
+    std::fs::write(&open, "v 0 0 0\nv 4 0 0\nv 0 4 0\nv 0 0 1\nf 1 3 2\nf 1 2 4\nf 2 3 4\n").unwrap();
+    let stl = dir.join("out.stl");
+    let cases: [(&[&str], &str); 6] = [
+        (&["--swatch", "lace", "--base", "plane:40x40"], "no mesh file or built-in swatch"),
+        (&["--swatch", "weave", "--base", "plane:40"], "not a base"),
+        (&["--swatch", "weave", "--base", "plane:40x40", "--scale", "0"], "scale"),
+        (&["--swatch", &path(&open), "--base", "plane:40x40"], "not a closed surface"),
+        (&["--swatch", "weave", "--base", "vase"], "not available yet"),
+        (&["--swatch", "weave", "--base", "plane:100000x100000"], "at most"),
+    ];
+    for (args, expected) in cases {
+        let out = tracery().arg("quilt").args(args).arg("--stl").arg(&stl).output().unwrap();
+        assert!(!out.status.success(), "{args:?} succeeded");
+        let err = String::from_utf8(out.stderr).unwrap();
+        assert_eq!(err.trim().lines().count(), 1, "{args:?}: {err}");
+        assert!(err.contains(expected), "{args:?}: {err}");
+        assert!(!stl.exists(), "{args:?} left a file");
+    }
+}
