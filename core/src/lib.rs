@@ -25,6 +25,8 @@
 //!   made of its rows.
 //! - [`raster_brush`]: bitmap exemplars synthesized along curves without
 //!   distortion, traced into printable outlines.
+//! - [`mesh_quilt`]: 3D texture grown over the plane from a mesh swatch,
+//!   element by element, stitched along graph cuts.
 //! - [`region_fill`]: regions filled with continuous curve textures (its
 //!   first stages: curve exemplars, sample graphs, robust matching).
 //!
