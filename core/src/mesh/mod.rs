@@ -4,6 +4,7 @@
 //! invariants.
 
 mod boolean;
+mod boundary;
 mod extrude;
 mod import;
 mod refine;
@@ -13,6 +14,7 @@ mod thicken;
 mod triangle_mesh;
 
 pub use boolean::{BooleanError, difference_solids, union_solids};
+pub use boundary::boundary_loops;
 pub(crate) use extrude::checked_thickness;
 pub use extrude::{MeshError, compact, extrude, triangulate_fine};
 pub use import::{ImportError, MAX_IMPORTED_TRIANGLES, read_mesh_file, read_obj, read_stl};

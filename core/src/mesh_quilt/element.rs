@@ -1,7 +1,7 @@
 //! [`Element`]: one geometric element of a swatch or of the output, a
 //! connected triangle mesh (a chain link, a thread, a rivet).
 
-use std::collections::{HashMap, HashSet};
+use std::collections::HashMap;
 
 use glam::{DVec2, DVec3};
 
@@ -180,34 +180,6 @@ impl Element {
 
     /// The boundary loops, each in the direction its triangles run along it.
     pub fn boundary_loops(&self) -> Vec<Vec<u32>> {
-        let directed: HashSet<(u32, u32)> =
-            self.triangles.iter().flat_map(|t| (0..3).map(move |k| (t[k], t[(k + 1) % 3]))).collect();
-        let mut next: HashMap<u32, u32> = HashMap::new();
-        for &(a, b) in &directed {
-            if !directed.contains(&(b, a)) {
-                next.insert(a, b);
-            }
-        }
-        let mut starts: Vec<u32> = next.keys().copied().collect();
-        starts.sort_unstable();
-        let mut seen = HashSet::new();
-        let mut loops = Vec::new();
-        for start in starts {
-            if seen.contains(&start) {
-                continue;
-            }
-            let mut ring = vec![start];
-            seen.insert(start);
-            let mut at = next[&start];
-            while at != start && seen.insert(at) {
-                ring.push(at);
-                match next.get(&at) {
-                    Some(&n) => at = n,
-                    None => break,
-                }
-            }
-            loops.push(ring);
-        }
-        loops
+        crate::mesh::boundary_loops(&self.triangles)
     }
 }

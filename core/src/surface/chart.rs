@@ -119,7 +119,7 @@ impl Chart {
             }));
         }
         let mut face_of: Vec<Option<u32>> = faces.iter().map(|&f| Some(f)).collect();
-        let mut loops = boundary_loops(&triangles);
+        let mut loops = crate::mesh::boundary_loops(&triangles);
         let length = |l: &Vec<u32>| -> f64 {
             (0..l.len()).map(|k| positions[l[k] as usize].distance(positions[l[(k + 1) % l.len()] as usize])).sum()
         };
@@ -271,40 +271,6 @@ fn untie_bowties(surface: &SurfaceMesh, inside: &mut HashSet<u32>) {
             }
         }
     }
-}
-
-/// The boundary loops of `triangles`, each in the direction its triangles
-/// run along it.
-fn boundary_loops(triangles: &[[u32; 3]]) -> Vec<Vec<u32>> {
-    let directed: HashSet<(u32, u32)> =
-        triangles.iter().flat_map(|t| (0..3).map(move |k| (t[k], t[(k + 1) % 3]))).collect();
-    let mut next: HashMap<u32, u32> = HashMap::new();
-    for &(a, b) in &directed {
-        if !directed.contains(&(b, a)) {
-            next.insert(a, b);
-        }
-    }
-    let mut loops = Vec::new();
-    let mut starts: Vec<u32> = next.keys().copied().collect();
-    starts.sort_unstable();
-    let mut seen = HashSet::new();
-    for start in starts {
-        if seen.contains(&start) {
-            continue;
-        }
-        let mut ring = vec![start];
-        seen.insert(start);
-        let mut at = next[&start];
-        while at != start && seen.insert(at) {
-            ring.push(at);
-            match next.get(&at) {
-                Some(&n) => at = n,
-                None => break,
-            }
-        }
-        loops.push(ring);
-    }
-    loops
 }
 
 /// Floater's mean-value map: `outer` on the unit circle by arc length, every
