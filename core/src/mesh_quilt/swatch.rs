@@ -6,7 +6,6 @@ use std::collections::HashMap;
 use glam::DVec3;
 
 use super::{Element, QuiltError};
-use crate::disjoint_sets::DisjointSets;
 use crate::mesh::Mesh;
 
 /// The most triangles a swatch may have: the paper's largest had 35 640.
@@ -57,25 +56,11 @@ impl Swatch {
             let [p, q] = [a, b].map(|i| DVec3::from_array(mesh.vertices[i as usize]));
             return Err(QuiltError::NonManifold { edges: crowded.len(), at_mm: (0.5 * (p + q)).to_array() });
         }
-        let mut sets = DisjointSets::new(mesh.triangles.len());
-        for faces in by_edge.values() {
-            if let [f, g] = faces[..] {
-                sets.join(f, g);
-            }
-        }
         let whole = Element {
             vertices: mesh.vertices.iter().map(|&v| DVec3::from_array(v)).collect(),
             triangles: mesh.triangles.clone(),
         };
-        let mut roots: Vec<usize> = (0..mesh.triangles.len()).map(|f| sets.find(f)).collect();
-        let mut order: Vec<usize> = roots.clone();
-        order.sort_unstable();
-        order.dedup();
-        let index: HashMap<usize, usize> = order.iter().enumerate().map(|(i, &r)| (r, i)).collect();
-        for r in &mut roots {
-            *r = index[r];
-        }
-        let elements: Vec<Element> = (0..order.len()).map(|e| whole.subset(|f| roots[f] == e)).collect();
+        let elements = whole.parts();
         for (i, element) in elements.iter().enumerate() {
             if let Err(defect) = element.to_mesh().sanity_check() {
                 return Err(QuiltError::OpenElement { element: i + 1, reason: defect.to_string() });
