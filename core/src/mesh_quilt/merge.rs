@@ -95,7 +95,7 @@ pub(super) fn merge_patch(
     reach_mm: f64,
 ) -> MergeCounts {
     let mut counts = MergeCounts::default();
-    let in_patch = |v: DVec3| matches!(grid.zone(v), Zone::New | Zone::Overlap);
+    let in_patch = |v: DVec3| grid.zone(v).in_patch();
     let placed: Vec<Element> = swatch
         .elements
         .iter()
@@ -229,7 +229,7 @@ fn merge_pair(
     reach_mm: f64,
     counts: &mut MergeCounts,
 ) -> Merged {
-    let out_home = c_out.vertices.iter().filter(|&&v| matches!(grid.zone(v), Zone::Old | Zone::Outside)).count();
+    let out_home = c_out.vertices.iter().filter(|&&v| !grid.zone(v).in_patch()).count();
     let in_home = c_in.vertices.iter().filter(|&&v| grid.zone(v) == Zone::New).count();
     if out_home == 0 {
         counts.replaced += 1;
@@ -244,7 +244,7 @@ fn merge_pair(
     // moves or is cut: the rest is done.
     let (mut c_out, mut c_in) = (c_out.clone(), c_in.clone());
     let fixed: Vec<bool> = c_out.vertices.iter().map(|&v| !grid.near_footprint(v, WORK_CELLS)).collect();
-    meet(&mut c_out, to_in, |v| !matches!(grid.zone(v), Zone::New | Zone::Overlap), &fixed, mu);
+    meet(&mut c_out, to_in, |v| !grid.zone(v).in_patch(), &fixed, mu);
     let free = vec![false; c_in.vertices.len()];
     meet(&mut c_in, to_out, |v| grid.zone(v) == Zone::New, &free, mu);
     match cut_and_stitch(&c_out, &c_in, grid, reach_mm) {
@@ -263,19 +263,18 @@ fn merge_pair(
 /// is not covered by what stays, then stitches the two.
 fn cut_and_stitch(c_out: &Element, c_in: &Element, grid: &Grid, reach_mm: f64) -> Option<Element> {
     let c = grid.cell_mm;
-    let zones: Vec<Zone> = (0..c_out.triangles.len()).map(|f| grid.zone(c_out.face_centre(f))).collect();
     // Only triangles over the patch take part in the cut; the rest stay.
     let active: Vec<u32> =
-        (0..c_out.triangles.len() as u32).filter(|&f| matches!(zones[f as usize], Zone::New | Zone::Overlap)).collect();
+        (0..c_out.triangles.len() as u32).filter(|&f| grid.zone(c_out.face_centre(f as usize)).in_patch()).collect();
     let mut node = vec![u32::MAX; c_out.triangles.len()];
     for (k, &f) in active.iter().enumerate() {
         node[f as usize] = k as u32;
     }
-    let nearby: Vec<u32> = (0..c_out.triangles.len() as u32)
-        .filter(|&f| grid.near_footprint(c_out.face_centre(f as usize), WORK_CELLS + reach_mm / c))
+    let is_nearby: Vec<bool> = (0..c_out.triangles.len())
+        .map(|f| grid.near_footprint(c_out.face_centre(f), WORK_CELLS + reach_mm / c))
         .collect();
-    let out_faces =
-        Faces::new([&c_out.subset(|f| grid.near_footprint(c_out.face_centre(f), WORK_CELLS + reach_mm / c))]);
+    let nearby: Vec<u32> = (0..c_out.triangles.len() as u32).filter(|&f| is_nearby[f as usize]).collect();
+    let out_faces = Faces::new([&c_out.subset(|f| is_nearby[f])]);
     let in_faces = Faces::new([c_in]);
     // The swatch's faces that the output covers, and the frontier of them.
     let matched: Vec<bool> = (0..c_in.triangles.len())

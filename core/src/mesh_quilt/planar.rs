@@ -60,6 +60,13 @@ pub(super) enum Zone {
     Outside,
 }
 
+impl Zone {
+    /// Whether the patch covers it (its new cells or its overlap).
+    pub fn in_patch(self) -> bool {
+        matches!(self, Zone::New | Zone::Overlap)
+    }
+}
+
 /// The output's grid and the patch being merged.
 pub(super) struct Grid {
     pub cell_mm: f64,

@@ -134,15 +134,7 @@ pub fn lathe_ring(centre: DVec3, profile: &[DVec2], sides: usize) -> Element {
 
 /// Turns every triangle over if the element encloses a negative volume.
 pub(super) fn orient_outward(element: &mut Element) {
-    let volume: f64 = element
-        .triangles
-        .iter()
-        .map(|t| {
-            let [a, b, c] = t.map(|i| element.vertices[i as usize]);
-            a.dot(b.cross(c))
-        })
-        .sum();
-    if volume < 0.0 {
+    if element.to_mesh().signed_volume() < 0.0 {
         for t in &mut element.triangles {
             t.swap(1, 2);
         }
