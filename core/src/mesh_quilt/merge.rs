@@ -5,14 +5,14 @@
 
 use std::collections::HashMap;
 
-use glam::{DVec2, DVec3};
+use glam::DVec3;
 
 use super::cut::{FORCED, min_cut_keep};
 use super::deform::{Constraint, deform};
 use super::faces::Faces;
-use super::planar::{Grid, Zone, overlaps};
 use super::stitch::stitch;
-use super::{Element, Settings, Swatch};
+use super::zones::{Zone, Zones, boxes_overlap};
+use super::{Element, Settings};
 
 /// Pairs needed before two elements are taken to correspond: one stray
 /// vertex near another element is not a correspondence.
@@ -85,30 +85,19 @@ fn pairs(from: &Element, to: &Faces, reach_mm: f64, wanted: impl Fn(DVec3) -> bo
         .collect()
 }
 
-/// Merges the swatch placed at `offset` into `output`.
+/// Merges the swatch's elements `placed` in output space into `output`.
 pub(super) fn merge_patch(
     output: &mut Vec<Element>,
-    swatch: &Swatch,
-    grid: &Grid,
-    offset: DVec2,
+    placed: Vec<Element>,
+    grid: &impl Zones,
     settings: &Settings,
     reach_mm: f64,
 ) -> MergeCounts {
     let mut counts = MergeCounts::default();
     let in_patch = |v: DVec3| grid.zone(v).in_patch();
-    let placed: Vec<Element> = swatch
-        .elements
-        .iter()
-        .map(|e| e.translated(offset.extend(0.0)))
-        .filter(|e| e.vertices.iter().any(|&v| in_patch(v)))
-        .collect();
-    let [i0, j0, i1, j1] = grid.footprint;
-    let c = grid.cell_mm;
-    let area = (
-        DVec2::new(i0 as f64, j0 as f64) * c - DVec2::splat(reach_mm),
-        DVec2::new(i1 as f64, j1 as f64) * c + DVec2::splat(reach_mm),
-    );
-    let near: Vec<usize> = (0..output.len()).filter(|&k| overlaps(output[k].footprint(), area)).collect();
+    let placed: Vec<Element> = placed.into_iter().filter(|e| e.vertices.iter().any(|&v| in_patch(v))).collect();
+    let area = grid.near_box(reach_mm);
+    let near: Vec<usize> = (0..output.len()).filter(|&k| boxes_overlap(output[k].bounds(), area)).collect();
     let out_faces = Faces::new(near.iter().map(|&k| &output[k]));
     let in_faces = Faces::new(&placed);
     let forward: Vec<Vec<Pair>> = near.iter().map(|&k| pairs(&output[k], &in_faces, reach_mm, in_patch)).collect();
@@ -165,9 +154,9 @@ pub(super) fn merge_patch(
     let mut built: HashMap<usize, Faces> = HashMap::new();
     for (replaces, element) in changes {
         let faces = Faces::new([&element]);
-        let footprint = element.footprint();
+        let bounds = element.bounds();
         let others: Vec<usize> =
-            (0..output.len()).filter(|&k| Some(k) != replaces && overlaps(output[k].footprint(), footprint)).collect();
+            (0..output.len()).filter(|&k| Some(k) != replaces && boxes_overlap(output[k].bounds(), bounds)).collect();
         let crosses =
             others.iter().any(|&k| faces.intersects(built.entry(k).or_insert_with(|| Faces::new([&output[k]]))));
         if crosses {
@@ -224,7 +213,7 @@ fn merge_pair(
     c_in: &Element,
     to_in: &[Pair],
     to_out: &[Pair],
-    grid: &Grid,
+    grid: &impl Zones,
     mu: f64,
     reach_mm: f64,
     counts: &mut MergeCounts,
@@ -261,8 +250,8 @@ fn merge_pair(
 
 /// Cuts the output element along a minimum cut and the swatch's where it
 /// is not covered by what stays, then stitches the two.
-fn cut_and_stitch(c_out: &Element, c_in: &Element, grid: &Grid, reach_mm: f64) -> Option<Element> {
-    let c = grid.cell_mm;
+fn cut_and_stitch(c_out: &Element, c_in: &Element, grid: &impl Zones, reach_mm: f64) -> Option<Element> {
+    let c = grid.cell_mm();
     // Only triangles over the patch take part in the cut; the rest stay.
     let active: Vec<u32> =
         (0..c_out.triangles.len() as u32).filter(|&f| grid.zone(c_out.face_centre(f as usize)).in_patch()).collect();

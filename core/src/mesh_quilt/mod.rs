@@ -18,6 +18,7 @@ mod settings;
 mod shapes;
 mod stitch;
 mod swatch;
+mod zones;
 
 pub use builtin::{SWATCH_NAMES, builtin_swatch};
 pub use cut::{FORCED, min_cut_keep};

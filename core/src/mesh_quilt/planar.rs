@@ -10,6 +10,7 @@ use rayon::prelude::*;
 
 use super::faces::Faces;
 use super::merge::{MergeCounts, merge_patch};
+use super::zones::{Zone, Zones};
 use super::{Element, QuiltError, Settings, Swatch};
 use crate::control::Control;
 use crate::random::SplitMix64;
@@ -47,34 +48,14 @@ pub struct QuiltCounts {
     pub fragments: usize,
 }
 
-/// Where a point lies for one patch.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub(super) enum Zone {
-    /// Made by earlier patches, outside this one.
-    Old,
-    /// Made by earlier patches and covered by this one.
-    Overlap,
-    /// Covered by this patch for the first time.
-    New,
-    /// Neither.
-    Outside,
-}
-
-impl Zone {
-    /// Whether the patch covers it (its new cells or its overlap).
-    pub fn in_patch(self) -> bool {
-        matches!(self, Zone::New | Zone::Overlap)
-    }
-}
-
 /// The output's grid and the patch being merged.
 pub(super) struct Grid {
-    pub cell_mm: f64,
+    cell_mm: f64,
     nx: i64,
     ny: i64,
     processed: Vec<bool>,
     /// The patch's claimed cells, `[low, high)` in cells.
-    pub footprint: [i64; 4],
+    footprint: [i64; 4],
 }
 
 impl Grid {
@@ -95,24 +76,6 @@ impl Grid {
         self.inside((i, j)) && (i0..i1).contains(&i) && (j0..j1).contains(&j)
     }
 
-    /// Whether `p` lies over the patch's footprint grown by `cells` cells.
-    pub fn near_footprint(&self, p: DVec3, cells: f64) -> bool {
-        let [i0, j0, i1, j1] = self.footprint;
-        let (x, y) = (p.x / self.cell_mm, p.y / self.cell_mm);
-        x >= i0 as f64 - cells && x <= i1 as f64 + cells && y >= j0 as f64 - cells && y <= j1 as f64 + cells
-    }
-
-    /// Where `p` lies for the current patch.
-    pub fn zone(&self, p: DVec3) -> Zone {
-        let c = self.cell(p.truncate());
-        match (self.is_processed(c), self.in_footprint(c)) {
-            (true, true) => Zone::Overlap,
-            (true, false) => Zone::Old,
-            (false, true) => Zone::New,
-            (false, false) => Zone::Outside,
-        }
-    }
-
     /// The unprocessed cell with the most processed neighbours.
     fn seed(&self) -> Option<(i64, i64)> {
         let mut best: Option<((i64, i64), usize)> = None;
@@ -131,6 +94,37 @@ impl Grid {
             }
         }
         best.map(|(c, _)| c)
+    }
+}
+
+impl Zones for Grid {
+    fn cell_mm(&self) -> f64 {
+        self.cell_mm
+    }
+
+    fn near_footprint(&self, p: DVec3, cells: f64) -> bool {
+        let [i0, j0, i1, j1] = self.footprint;
+        let (x, y) = (p.x / self.cell_mm, p.y / self.cell_mm);
+        x >= i0 as f64 - cells && x <= i1 as f64 + cells && y >= j0 as f64 - cells && y <= j1 as f64 + cells
+    }
+
+    fn zone(&self, p: DVec3) -> Zone {
+        let c = self.cell(p.truncate());
+        match (self.is_processed(c), self.in_footprint(c)) {
+            (true, true) => Zone::Overlap,
+            (true, false) => Zone::Old,
+            (false, true) => Zone::New,
+            (false, false) => Zone::Outside,
+        }
+    }
+
+    fn near_box(&self, margin_mm: f64) -> (DVec3, DVec3) {
+        let [i0, j0, i1, j1] = self.footprint;
+        let c = self.cell_mm;
+        (
+            DVec3::new(i0 as f64 * c - margin_mm, j0 as f64 * c - margin_mm, f64::NEG_INFINITY),
+            DVec3::new(i1 as f64 * c + margin_mm, j1 as f64 * c + margin_mm, f64::INFINITY),
+        )
     }
 }
 
@@ -183,7 +177,8 @@ pub fn quilt_plane(
         let (a, b, offset) =
             place(&input, &quilt.elements, &grid, &window, seed, half, settings, reach_mm, &mut random);
         grid.footprint = [a + MARGIN_CELLS, b + MARGIN_CELLS, a + sx - MARGIN_CELLS, b + sy - MARGIN_CELLS];
-        let counts = merge_patch(&mut quilt.elements, swatch, &grid, offset, settings, reach_mm);
+        let placed: Vec<Element> = swatch.elements.iter().map(|e| e.translated(offset.extend(0.0))).collect();
+        let counts = merge_patch(&mut quilt.elements, placed, &grid, settings, reach_mm);
         quilt.counts.merges.add(&counts);
         let [i0, j0, i1, j1] = grid.footprint;
         for j in j0.max(0)..j1.min(grid.ny) {
@@ -310,7 +305,7 @@ fn window_box(window: &[(i64, i64)], c: f64) -> (DVec2, DVec2) {
 }
 
 /// Whether two boxes seen from above overlap.
-pub(super) fn overlaps(a: (DVec2, DVec2), b: (DVec2, DVec2)) -> bool {
+fn overlaps(a: (DVec2, DVec2), b: (DVec2, DVec2)) -> bool {
     a.0.x <= b.1.x && b.0.x <= a.1.x && a.0.y <= b.1.y && b.0.y <= a.1.y
 }
 
