@@ -20,6 +20,7 @@ mod stroke;
 mod topology;
 mod touching;
 mod trace;
+mod triangle_grid;
 
 pub use boolean::{FillRule, clip_to_rect, difference, intersection, resolve_contours, union};
 pub use bridges::join_parts;
@@ -38,3 +39,4 @@ pub use stroke::{STROKE_ARC_TOLERANCE_MM, brush_stroke};
 pub use topology::{PatternTopology, Topology, count_topology};
 pub use touching::{separate_touching, separate_touching_rings};
 pub use trace::{OPAQUE_ALPHA, PixelFrame, join_corners, trace_opaque};
+pub use triangle_grid::{LOCATE_SLACK, TriangleGrid, barycentric};

@@ -23,6 +23,7 @@ use faer::sparse::{SparseColMat, Triplet};
 use glam::{DVec2, DVec3};
 
 use super::{SurfaceMesh, SurfacePoint};
+use crate::geom::{TriangleGrid, barycentric};
 
 /// Why no chart could be made.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
@@ -64,7 +65,7 @@ pub struct Chart {
     /// Each chart triangle's mesh face, or `None` for a fan closing a hole.
     face_of: Vec<Option<u32>>,
     chart_triangle_of: HashMap<u32, u32>,
-    grid: Grid,
+    grid: TriangleGrid,
 }
 
 impl Chart {
@@ -150,7 +151,7 @@ impl Chart {
         let uv = mean_value_map(&positions, &triangles, &loops[0])?;
         let chart_triangle_of =
             face_of.iter().enumerate().filter_map(|(t, f)| f.map(|f| (f, t as u32))).collect::<HashMap<_, _>>();
-        let grid = Grid::new(&uv, &triangles);
+        let grid = TriangleGrid::new(&uv, &triangles, DVec2::splat(-1.0), DVec2::splat(1.0));
         Ok(Chart { vertex_of, local_of, uv, triangles, face_of, chart_triangle_of, grid })
     }
 
@@ -172,19 +173,12 @@ impl Chart {
 
     /// The chart triangle holding `p` on the disk, with barycentric coordinates.
     pub fn locate(&self, p: DVec2) -> Option<(u32, [f64; 3])> {
-        self.grid.candidates(p).iter().find_map(|&t| {
-            let b = self.barycentric(t, p);
-            b.iter().all(|&c| c >= -LOCATE_SLACK).then_some((t, b))
-        })
+        self.grid.locate(&self.uv, &self.triangles, p)
     }
 
     /// Barycentric coordinates of `p` in chart triangle `t` (unclamped).
     pub fn barycentric(&self, t: u32, p: DVec2) -> [f64; 3] {
-        let [a, b, c] = self.triangles[t as usize].map(|v| self.uv[v as usize]);
-        let area = (b - a).perp_dot(c - a);
-        let l1 = (p - a).perp_dot(c - a) / area;
-        let l2 = (b - a).perp_dot(p - a) / area;
-        [1.0 - l1 - l2, l1, l2]
+        barycentric(self.triangles[t as usize].map(|v| self.uv[v as usize]), p)
     }
 
     /// The chart triangle's corners (chart vertices).
@@ -224,10 +218,6 @@ impl Chart {
             .collect()
     }
 }
-
-/// How far outside a triangle, in barycentric terms, a point may be found
-/// in it: points on a shared edge belong to both.
-const LOCATE_SLACK: f64 = 1e-9;
 
 /// Keeps the triangles of `inside` joined to `seed` through edges.
 fn keep_component(surface: &SurfaceMesh, inside: &mut HashSet<u32>, seed: u32) {
@@ -424,38 +414,5 @@ impl VertexGraph {
             }
         }
         (distance, previous)
-    }
-}
-
-/// Buckets of chart triangles on a square grid over the disk, for finding
-/// the triangle under a point.
-struct Grid {
-    cells: usize,
-    buckets: Vec<Vec<u32>>,
-}
-
-impl Grid {
-    fn new(uv: &[DVec2], triangles: &[[u32; 3]]) -> Grid {
-        let cells = ((triangles.len() as f64).sqrt().ceil() as usize).clamp(1, 1024);
-        let mut buckets = vec![Vec::new(); cells * cells];
-        let cell = |x: f64| (((x + 1.0) * 0.5 * cells as f64).floor().max(0.0) as usize).min(cells - 1);
-        for (t, tri) in triangles.iter().enumerate() {
-            let p = tri.map(|v| uv[v as usize]);
-            let (low, high) = (p[0].min(p[1]).min(p[2]), p[0].max(p[1]).max(p[2]));
-            for y in cell(low.y)..=cell(high.y) {
-                for x in cell(low.x)..=cell(high.x) {
-                    buckets[y * cells + x].push(t as u32);
-                }
-            }
-        }
-        Grid { cells, buckets }
-    }
-
-    fn candidates(&self, p: DVec2) -> &[u32] {
-        if !p.is_finite() {
-            return &[];
-        }
-        let cell = |x: f64| (((x + 1.0) * 0.5 * self.cells as f64).floor().max(0.0) as usize).min(self.cells - 1);
-        &self.buckets[cell(p.y) * self.cells + cell(p.x)]
     }
 }

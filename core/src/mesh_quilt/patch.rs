@@ -1,0 +1,374 @@
+//! A patch of a curved base laid flat (the paper's section 3.1): base
+//! faces within a geodesic radius of a seed face, flattened by least
+//! squares conformal maps (LSCM, a sparse solve through faer), scaled to
+//! keep their area, and turned so the guidance field at the seed points
+//! along `u`. A patch whose area is distorted by more than
+//! [`MAX_AREA_DISTORTION`] somewhere, or that is not a disk, is refused, and
+//! the caller grows a smaller one.
+
+use std::cmp::Reverse;
+use std::collections::{BinaryHeap, HashMap};
+
+use faer::Mat;
+use faer::prelude::Solve;
+use faer::sparse::{SparseColMat, Triplet};
+use glam::{DVec2, DVec3};
+
+use crate::geom::TriangleGrid;
+use crate::surface::SurfaceMesh;
+
+/// The most a patch's triangles may grow or shrink in area when laid flat
+/// (the paper's factor of 4).
+pub const MAX_AREA_DISTORTION: f64 = 4.0;
+
+/// The base's faces and which faces share an edge, for growing patches.
+pub(super) struct FaceGraph {
+    /// Each face's centroid, mm.
+    pub centres: Vec<DVec3>,
+    /// Faces across each face's edges.
+    pub neighbours: Vec<Vec<u32>>,
+}
+
+impl FaceGraph {
+    /// The face graph of `surface`.
+    pub fn new(surface: &SurfaceMesh) -> FaceGraph {
+        let triangles = surface.triangles();
+        let centres = (0..triangles.len() as u32).map(|f| surface.point(f, [1.0 / 3.0; 3])).collect();
+        let neighbours = triangles
+            .iter()
+            .enumerate()
+            .map(|(f, t)| {
+                (0..3)
+                    .flat_map(|k| surface.faces_on_edge(t[k], t[(k + 1) % 3]).iter().copied())
+                    .filter(|&g| g as usize != f)
+                    .collect()
+            })
+            .collect();
+        FaceGraph { centres, neighbours }
+    }
+
+    /// Faces within `radius_mm` of any of `seeds` along the face graph
+    /// (centre to centre), with their distances, nearest first.
+    pub fn within(&self, seeds: &[u32], radius_mm: f64) -> Vec<(u32, f64)> {
+        let mut best: HashMap<u32, f64> = seeds.iter().map(|&s| (s, 0.0)).collect();
+        let mut heap: BinaryHeap<Reverse<(u64, u32)>> = seeds.iter().map(|&s| Reverse((0, s))).collect();
+        let mut out = Vec::new();
+        while let Some(Reverse((d, f))) = heap.pop() {
+            let d = f64::from_bits(d);
+            if best.get(&f).is_some_and(|&b| d > b) {
+                continue;
+            }
+            out.push((f, d));
+            for &g in &self.neighbours[f as usize] {
+                let e = d + self.centres[f as usize].distance(self.centres[g as usize]);
+                if e <= radius_mm && best.get(&g).is_none_or(|&b| e < b) {
+                    best.insert(g, e);
+                    // Non-negative floats order as their bits do.
+                    heap.push(Reverse((e.to_bits(), g)));
+                }
+            }
+        }
+        out
+    }
+}
+
+/// Why a patch could not be laid flat.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(super) enum Unflat {
+    /// The faces do not make a disk (they wrap around a handle or a neck).
+    NotDisk,
+    /// Some triangle grows or shrinks by more than the limit, or flips.
+    Distorted(f64),
+    /// The solve failed.
+    Solve,
+}
+
+/// Base faces laid flat, in millimetres of the flat plane.
+pub(super) struct Patch {
+    /// The base face of each patch triangle.
+    faces: Vec<u32>,
+    local_of_face: HashMap<u32, u32>,
+    triangles: Vec<[u32; 3]>,
+    uv: Vec<DVec2>,
+    /// Each triangle's direction of `u` on the base (unit, tangent).
+    u_axis: Vec<DVec3>,
+    grid: TriangleGrid,
+    /// The largest growth or shrinking of a triangle's area.
+    pub distortion: f64,
+}
+
+impl Patch {
+    /// Lays `faces` of `surface` flat, with `seed`'s centroid at `seed_uv`
+    /// and `direction` (a tangent at the seed) along `+u`.
+    pub fn lay_flat(
+        surface: &SurfaceMesh,
+        faces: Vec<u32>,
+        seed: u32,
+        direction: DVec3,
+        seed_uv: DVec2,
+    ) -> Result<Patch, Unflat> {
+        let mut vertex_of: Vec<u32> = Vec::new();
+        let mut local: HashMap<u32, u32> = HashMap::new();
+        let triangles: Vec<[u32; 3]> = faces
+            .iter()
+            .map(|&f| {
+                surface.triangles()[f as usize].map(|v| {
+                    *local.entry(v).or_insert_with(|| {
+                        vertex_of.push(v);
+                        (vertex_of.len() - 1) as u32
+                    })
+                })
+            })
+            .collect();
+        let positions: Vec<DVec3> = vertex_of.iter().map(|&v| surface.positions()[v as usize]).collect();
+        let mut edges: Vec<(u32, u32)> = triangles
+            .iter()
+            .flat_map(|t| (0..3).map(move |k| (t[k].min(t[(k + 1) % 3]), t[k].max(t[(k + 1) % 3]))))
+            .collect();
+        edges.sort_unstable();
+        edges.dedup();
+        if positions.len() as i64 - edges.len() as i64 + triangles.len() as i64 != 1 {
+            return Err(Unflat::NotDisk);
+        }
+        let seed_local = faces.iter().position(|&f| f == seed).ok_or(Unflat::NotDisk)?;
+        let mut uv = lscm(&positions, &triangles, triangles[seed_local][0]).ok_or(Unflat::Solve)?;
+        // LSCM keeps angles, not size: scale so the flat area is the base's.
+        let area_3d: Vec<f64> = triangles.iter().map(|t| triangle_area_3d(t.map(|v| positions[v as usize]))).collect();
+        let area_uv = |uv: &[DVec2], t: &[u32; 3]| {
+            let [a, b, c] = t.map(|v| uv[v as usize]);
+            0.5 * (b - a).perp_dot(c - a)
+        };
+        let total_flat: f64 = triangles.iter().map(|t| area_uv(&uv, t)).sum();
+        if total_flat.abs() <= f64::MIN_POSITIVE {
+            return Err(Unflat::Solve);
+        }
+        // A mirror image (the solve does not know which side is up) is
+        // turned over: patch triangles run counter-clockwise like the base's.
+        let flip = if total_flat < 0.0 { -1.0 } else { 1.0 };
+        let scale = (area_3d.iter().sum::<f64>() / total_flat.abs()).sqrt();
+        for p in &mut uv {
+            *p = DVec2::new(p.x, flip * p.y) * scale;
+        }
+        let mut distortion: f64 = 1.0;
+        for (t, a3) in triangles.iter().zip(&area_3d) {
+            let a2 = area_uv(&uv, t);
+            if a2 <= 0.0 || *a3 <= 0.0 {
+                return Err(Unflat::Distorted(f64::INFINITY));
+            }
+            distortion = distortion.max((a2 / a3).max(a3 / a2));
+        }
+        if distortion > MAX_AREA_DISTORTION {
+            return Err(Unflat::Distorted(distortion));
+        }
+        // Turn and move: the field at the seed along +u, the seed where asked.
+        let seed_t = triangles[seed_local];
+        let jacobian = Jacobian::of(seed_t.map(|v| positions[v as usize]), seed_t.map(|v| uv[v as usize]));
+        let along = jacobian.to_flat(direction);
+        let angle = if along.length_squared() > 1e-18 { along.y.atan2(along.x) } else { 0.0 };
+        let turn = DVec2::from_angle(-angle);
+        let centre: DVec2 = seed_t.iter().map(|&v| turn.rotate(uv[v as usize])).sum::<DVec2>() / 3.0;
+        for p in &mut uv {
+            *p = turn.rotate(*p) - centre + seed_uv;
+        }
+        let u_axis = triangles
+            .iter()
+            .map(|t| Jacobian::of(t.map(|v| positions[v as usize]), t.map(|v| uv[v as usize])).du.normalize_or_zero())
+            .collect();
+        let (low, high) = uv.iter().fold((DVec2::INFINITY, DVec2::NEG_INFINITY), |(lo, hi), &p| (lo.min(p), hi.max(p)));
+        let grid = TriangleGrid::new(&uv, &triangles, low, high);
+        let local_of_face = faces.iter().enumerate().map(|(t, &f)| (f, t as u32)).collect();
+        Ok(Patch { faces, local_of_face, triangles, uv, u_axis, grid, distortion })
+    }
+
+    /// The base faces in the patch.
+    pub fn faces(&self) -> &[u32] {
+        &self.faces
+    }
+
+    /// Where a point of base face `face` lies on the flat patch.
+    pub fn to_flat(&self, face: u32, barycentric: [f64; 3]) -> Option<DVec2> {
+        let t = *self.local_of_face.get(&face)?;
+        Some((0..3).map(|k| self.uv[self.triangles[t as usize][k] as usize] * barycentric[k]).sum())
+    }
+
+    /// The base face under `p` on the flat patch, with barycentric coordinates.
+    pub fn locate(&self, p: DVec2) -> Option<(u32, [f64; 3])> {
+        let (t, b) = self.grid.locate(&self.uv, &self.triangles, p)?;
+        Some((self.faces[t as usize], b.map(|c| c.max(0.0)).map(|c| c / b.iter().map(|c| c.max(0.0)).sum::<f64>())))
+    }
+
+    /// The base's `u` direction (unit, tangent) over face `face`, if in the patch.
+    pub fn u_axis(&self, face: u32) -> Option<DVec3> {
+        self.local_of_face.get(&face).map(|&t| self.u_axis[t as usize])
+    }
+}
+
+/// Area of a triangle in space.
+fn triangle_area_3d([a, b, c]: [DVec3; 3]) -> f64 {
+    0.5 * (b - a).cross(c - a).length()
+}
+
+/// The linear map from a flat triangle to its base triangle.
+struct Jacobian {
+    du: DVec3,
+    dv: DVec3,
+}
+
+impl Jacobian {
+    fn of(p: [DVec3; 3], q: [DVec2; 3]) -> Jacobian {
+        let (e1, e2) = (q[1] - q[0], q[2] - q[0]);
+        let det = e1.perp_dot(e2);
+        let (f1, f2) = (p[1] - p[0], p[2] - p[0]);
+        // [f1 f2] = J [e1 e2], so J = [f1 f2] [e1 e2]^-1.
+        let inv = [[e2.y / det, -e2.x / det], [-e1.y / det, e1.x / det]];
+        Jacobian { du: f1 * inv[0][0] + f2 * inv[1][0], dv: f1 * inv[0][1] + f2 * inv[1][1] }
+    }
+
+    /// The flat vector whose image is nearest `d` (least squares).
+    fn to_flat(&self, d: DVec3) -> DVec2 {
+        let (a, b, c) = (self.du.dot(self.du), self.du.dot(self.dv), self.dv.dot(self.dv));
+        let (x, y) = (self.du.dot(d), self.dv.dot(d));
+        let det = a * c - b * b;
+        if det.abs() <= f64::MIN_POSITIVE {
+            return DVec2::ZERO;
+        }
+        DVec2::new((c * x - b * y) / det, (a * y - b * x) / det)
+    }
+}
+
+/// Least squares conformal map (Lévy et al. 2002) of a disk-like mesh:
+/// `pin` at the origin and the vertex farthest from it on the `u` axis at
+/// their distance in space; `None` if the solve fails.
+fn lscm(positions: &[DVec3], triangles: &[[u32; 3]], pin: u32) -> Option<Vec<DVec2>> {
+    let n = positions.len();
+    let far = (0..n as u32).max_by(|&a, &b| {
+        let p = positions[pin as usize];
+        positions[a as usize].distance_squared(p).total_cmp(&positions[b as usize].distance_squared(p))
+    })?;
+    if far == pin {
+        return None;
+    }
+    let mut pinned: Vec<Option<DVec2>> = vec![None; n];
+    pinned[pin as usize] = Some(DVec2::ZERO);
+    pinned[far as usize] = Some(DVec2::new(positions[pin as usize].distance(positions[far as usize]), 0.0));
+    // Unknowns: u then v of each free vertex.
+    let mut column = vec![usize::MAX; n];
+    let mut free = 0;
+    for v in 0..n {
+        if pinned[v].is_none() {
+            column[v] = free;
+            free += 1;
+        }
+    }
+    let unknowns = 2 * free;
+    let mut normal: HashMap<(usize, usize), f64> = HashMap::with_capacity(triangles.len() * 24);
+    let mut rhs = Mat::<f64>::zeros(unknowns, 1);
+    for t in triangles {
+        let p = t.map(|v| positions[v as usize]);
+        let x_axis = (p[1] - p[0]).normalize_or_zero();
+        let normal_dir = (p[1] - p[0]).cross(p[2] - p[0]);
+        let area2 = normal_dir.length();
+        if area2 <= f64::MIN_POSITIVE {
+            continue;
+        }
+        let y_axis = normal_dir.cross(x_axis) / area2;
+        let q = p.map(|c| DVec2::new((c - p[0]).dot(x_axis), (c - p[0]).dot(y_axis)));
+        let w = 1.0 / area2.sqrt();
+        // W_m: the edge opposite corner m, as a complex number; the
+        // residual Σ W_m (u_m + i v_m) vanishes for a similarity.
+        let coefficients: [DVec2; 3] = std::array::from_fn(|m| (q[(m + 2) % 3] - q[(m + 1) % 3]) * w);
+        // Real row: Σ a u − b v; imaginary row: Σ b u + a v.
+        for row in 0..2 {
+            let mut entries: Vec<(usize, f64)> = Vec::with_capacity(6);
+            let mut constant = 0.0;
+            for m in 0..3 {
+                let (a, b) = (coefficients[m].x, coefficients[m].y);
+                let (cu, cv) = if row == 0 { (a, -b) } else { (b, a) };
+                let v = t[m] as usize;
+                match pinned[v] {
+                    Some(fixed) => constant += cu * fixed.x + cv * fixed.y,
+                    None => {
+                        entries.push((column[v], cu));
+                        entries.push((free + column[v], cv));
+                    }
+                }
+            }
+            for &(i, wi) in &entries {
+                for &(j, wj) in &entries {
+                    *normal.entry((i, j)).or_default() += wi * wj;
+                }
+                rhs[(i, 0)] -= wi * constant;
+            }
+        }
+    }
+    let mut entries: Vec<((usize, usize), f64)> = normal.into_iter().collect();
+    entries.sort_unstable_by_key(|&(key, _)| key);
+    let triplets: Vec<Triplet<usize, usize, f64>> = entries.iter().map(|&((r, c), w)| Triplet::new(r, c, w)).collect();
+    let matrix = SparseColMat::<usize, f64>::try_new_from_triplets(unknowns, unknowns, &triplets).ok()?;
+    let solved = matrix.sp_lu().ok()?.solve(&rhs);
+    let uv: Vec<DVec2> = (0..n)
+        .map(|v| pinned[v].unwrap_or_else(|| DVec2::new(solved[(column[v], 0)], solved[(free + column[v], 0)])))
+        .collect();
+    uv.iter().all(|p| p.is_finite()).then_some(uv)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::surface::builtin_base;
+
+    /// A cylinder's side unrolls without distortion: LSCM must find that.
+    #[test]
+    fn a_cylinder_side_lays_flat_without_stretch() {
+        let surface = SurfaceMesh::new(builtin_base("cylinder").unwrap()).unwrap();
+        let graph = FaceGraph::new(&surface);
+        let seed = (0..surface.triangles().len() as u32)
+            .find(|&f| (graph.centres[f as usize].z - 30.0).abs() < 1.0 && surface.face_normal(f).z.abs() < 0.1)
+            .unwrap();
+        let faces: Vec<u32> = graph.within(&[seed], 20.0).into_iter().map(|(f, _)| f).collect();
+        let tangent = DVec3::Z.cross(surface.face_normal(seed)).normalize();
+        let patch = Patch::lay_flat(&surface, faces.clone(), seed, tangent, DVec2::new(5.0, 5.0)).unwrap();
+        assert!(patch.distortion < 1.02, "distortion {}", patch.distortion);
+        // Lengths between base vertices' images match their distance
+        // along the surface (around the cylinder and up it).
+        let seed_uv = patch.to_flat(seed, [1.0 / 3.0; 3]).unwrap();
+        assert!(seed_uv.distance(DVec2::new(5.0, 5.0)) < 1e-9);
+        for &f in faces.iter().step_by(37) {
+            let p = graph.centres[f as usize];
+            let q = graph.centres[seed as usize];
+            let around = 25.0 * (p.truncate().angle_to(q.truncate())).abs();
+            let up = p.z - q.z;
+            let flat = patch.to_flat(f, [1.0 / 3.0; 3]).unwrap() - seed_uv;
+            assert!((flat.x.abs() - around).abs() < 0.3, "around {around} flat {flat}");
+            assert!((flat.y.abs() - up.abs()).abs() < 0.3, "up {up} flat {flat}");
+            // Up the cylinder is +v: u runs along the field, v to its left.
+            assert!(flat.y * up >= -1e-6);
+        }
+        assert!(patch.u_axis(seed).unwrap().dot(tangent) > 0.999);
+        let (face, b) = patch.locate(seed_uv).unwrap();
+        assert_eq!(face, seed);
+        assert!(b.iter().all(|&c| (c - 1.0 / 3.0).abs() < 1e-6));
+    }
+
+    /// A whole sphere is no disk; half of one distorts within the limit
+    /// only if small enough.
+    #[test]
+    fn too_much_of_a_sphere_is_refused() {
+        let surface = SurfaceMesh::new(builtin_base("sphere").unwrap()).unwrap();
+        let graph = FaceGraph::new(&surface);
+        let all: Vec<u32> = (0..surface.triangles().len() as u32).collect();
+        let tangent = DVec3::X;
+        assert_eq!(Patch::lay_flat(&surface, all, 0, tangent, DVec2::ZERO).err(), Some(Unflat::NotDisk));
+        let seed = 5000;
+        let small: Vec<u32> = graph.within(&[seed], 15.0).into_iter().map(|(f, _)| f).collect();
+        let normal = surface.face_normal(seed);
+        let t = normal.any_orthonormal_vector();
+        let patch = Patch::lay_flat(&surface, small, seed, t, DVec2::ZERO).unwrap();
+        assert!(patch.distortion < MAX_AREA_DISTORTION);
+        let big: Vec<u32> = graph.within(&[seed], 80.0).into_iter().map(|(f, _)| f).collect();
+        assert!(matches!(
+            Patch::lay_flat(&surface, big, seed, t, DVec2::ZERO),
+            Err(Unflat::Distorted(_) | Unflat::NotDisk)
+        ));
+    }
+}
