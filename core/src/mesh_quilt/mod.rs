@@ -11,6 +11,7 @@ mod deform;
 mod element;
 mod error;
 mod faces;
+mod matching;
 mod merge;
 mod patch;
 mod planar;

@@ -3,12 +3,10 @@
 //! the translation that best matches what is already there, merged in
 //! element by element.
 
-use std::collections::HashMap;
-
 use glam::{DVec2, DVec3};
-use rayon::prelude::*;
 
 use super::faces::Faces;
+use super::matching::{Input, MARGIN_CELLS, Neighbourhood, best_translation, reach_mm, thin};
 use super::merge::{MergeCounts, merge_patch};
 use super::zones::{Zone, Zones};
 use super::{Element, QuiltError, Settings, Swatch};
@@ -17,14 +15,6 @@ use crate::random::SplitMix64;
 
 /// The most triangles a quilt may have.
 pub const MAX_QUILT_TRIANGLES: usize = 4_000_000;
-
-/// Output vertices sampled for the matching cost of one placement: enough
-/// to tell placements apart, few enough to try dozens per patch.
-const MATCH_SAMPLES: usize = 400;
-
-/// Cells at the swatch's edge that a patch overlaps but does not claim:
-/// elements there are often cut short by the swatch's own border.
-pub(super) const MARGIN_CELLS: i64 = 1;
 
 /// What quilting made.
 #[derive(Clone, Debug, Default, PartialEq)]
@@ -128,13 +118,6 @@ impl Zones for Grid {
     }
 }
 
-/// The swatch indexed for matching: its faces, and its vertices by cell.
-struct Input {
-    faces: Faces,
-    by_cell: HashMap<(i64, i64), Vec<(DVec3, DVec3)>>,
-    cells: (i64, i64),
-}
-
 /// Quilts a `width_mm` × `depth_mm` area of the plane with `swatch`
 /// (already scaled), from `(0, 0)`.
 pub fn quilt_plane(
@@ -153,7 +136,7 @@ pub fn quilt_plane(
         return Err(QuiltError::OutputTooLarge { triangles: estimate, max: MAX_QUILT_TRIANGLES });
     }
     let cell_mm = size.x.min(size.y) / settings.cells_across as f64;
-    let input = index_input(swatch, cell_mm);
+    let input = Input::new(swatch, cell_mm);
     let mut grid = Grid {
         cell_mm,
         nx: (width_mm / cell_mm).ceil() as i64,
@@ -162,9 +145,9 @@ pub fn quilt_plane(
         footprint: [0; 4],
     };
     grid.processed = vec![false; (grid.nx * grid.ny) as usize];
-    let reach_mm = 3.0 * swatch.elements.iter().map(Element::mean_edge_mm).sum::<f64>() / swatch.elements.len() as f64;
+    let reach_mm = reach_mm(swatch);
     let (sx, sy) = input.cells;
-    let half = ((sx.min(sy) - 2 * MARGIN_CELLS - 1) / 4).max(0);
+    let half = input.window_half();
     let mut random = SplitMix64::new(settings.seed);
     let mut quilt = Quilt::default();
     let total = grid.processed.len() as f32;
@@ -174,8 +157,9 @@ pub fn quilt_plane(
             .flat_map(|dj| (-half..=half).map(move |di| (seed.0 + di, seed.1 + dj)))
             .filter(|&c| grid.is_processed(c))
             .collect();
-        let (a, b, offset) =
-            place(&input, &quilt.elements, &grid, &window, seed, half, settings, reach_mm, &mut random);
+        let around = neighbourhood(&quilt.elements, &grid, &window);
+        let to_output = |p: DVec3, n: DVec3| Some((p, n));
+        let (a, b, offset) = best_translation(&input, &around, seed, settings, reach_mm, to_output, &mut random);
         grid.footprint = [a + MARGIN_CELLS, b + MARGIN_CELLS, a + sx - MARGIN_CELLS, b + sy - MARGIN_CELLS];
         let placed: Vec<Element> = swatch.elements.iter().map(|e| e.translated(offset.extend(0.0))).collect();
         let counts = merge_patch(&mut quilt.elements, placed, &grid, settings, reach_mm);
@@ -193,109 +177,17 @@ pub fn quilt_plane(
     Ok(quilt)
 }
 
-fn index_input(swatch: &Swatch, cell_mm: f64) -> Input {
-    let mut by_cell: HashMap<(i64, i64), Vec<(DVec3, DVec3)>> = HashMap::new();
-    for e in &swatch.elements {
-        for (v, n) in e.vertices.iter().zip(e.vertex_normals()) {
-            let c = ((v.x / cell_mm).floor() as i64, (v.y / cell_mm).floor() as i64);
-            by_cell.entry(c).or_default().push((*v, n));
-        }
-    }
-    let size = swatch.size_mm();
-    let cells = ((size.x / cell_mm).floor() as i64, (size.y / cell_mm).floor() as i64);
-    Input { faces: Faces::new(&swatch.elements), by_cell, cells }
-}
-
-/// The matching cost of one pair of a point and its closest face (the
-/// paper's equation 1), with distance measured in grid cells.
-fn pair_cost(distance_mm: f64, normal: DVec3, face_normal: DVec3, lambda: f64, cell_mm: f64) -> f64 {
-    (1.0 + lambda * distance_mm / cell_mm) * (1.0 + (normal - face_normal).length())
-}
-
-/// The best translation of the swatch for the patch around `seed`: the grid
-/// offset `(a, b)` in cells, and the translation in mm refined from it.
-#[allow(clippy::too_many_arguments)]
-fn place(
-    input: &Input,
-    output: &[Element],
-    grid: &Grid,
-    window: &[(i64, i64)],
-    seed: (i64, i64),
-    half: i64,
-    settings: &Settings,
-    reach_mm: f64,
-    random: &mut SplitMix64,
-) -> (i64, i64, DVec2) {
-    let (sx, sy) = input.cells;
-    let c = grid.cell_mm;
-    let low = (seed.0 + half + MARGIN_CELLS + 1 - sx, seed.1 + half + MARGIN_CELLS + 1 - sy);
-    let high = (seed.0 - half - MARGIN_CELLS, seed.1 - half - MARGIN_CELLS);
-    let candidates: Vec<(i64, i64)> = (low.1..=high.1).flat_map(|b| (low.0..=high.0).map(move |a| (a, b))).collect();
-    // The output near the window: its vertices in the window, sampled, and
-    // its faces for the reverse term.
+/// The output around the seed: its vertices in the window, sampled, and
+/// its faces for the reverse term.
+fn neighbourhood<'a>(output: &[Element], grid: &Grid, window: &'a [(i64, i64)]) -> Neighbourhood<'a> {
     let in_window = |p: DVec3| window.contains(&grid.cell(p.truncate()));
-    let window_box = window_box(window, c);
+    let window_box = window_box(window, grid.cell_mm);
     let near: Vec<&Element> = output.iter().filter(|e| overlaps(e.footprint(), window_box)).collect();
     let mut samples: Vec<(DVec3, DVec3)> = Vec::new();
     for e in &near {
         samples.extend(e.vertices.iter().zip(e.vertex_normals()).filter(|(v, _)| in_window(**v)).map(|(v, n)| (*v, n)));
     }
-    let stride = samples.len().div_ceil(MATCH_SAMPLES).max(1);
-    let samples: Vec<(DVec3, DVec3)> = samples.into_iter().step_by(stride).collect();
-    let output_faces = Faces::new(near.iter().copied());
-    let lambda = settings.lambda;
-    let cost = |&(a, b): &(i64, i64)| -> f64 {
-        if window.is_empty() {
-            return 0.0;
-        }
-        let t = DVec3::new(a as f64 * c, b as f64 * c, 0.0);
-        let forward: f64 = samples
-            .iter()
-            .map(|&(p, n)| match input.faces.closest(p - t) {
-                Some(hit) => pair_cost(hit.distance_mm, n, hit.normal, lambda, c),
-                None => pair_cost(2.0 * c, n, n, lambda, c),
-            })
-            .sum::<f64>()
-            / samples.len().max(1) as f64;
-        let mut reverse = Vec::new();
-        for &(i, j) in window {
-            if let Some(points) = input.by_cell.get(&(i - a, j - b)) {
-                reverse.extend(points.iter().map(|&(p, n)| (p + t, n)));
-            }
-        }
-        let stride = reverse.len().div_ceil(MATCH_SAMPLES).max(1);
-        let reverse: Vec<f64> = reverse
-            .iter()
-            .step_by(stride)
-            .map(|&(p, n)| match output_faces.closest(p) {
-                Some(hit) => pair_cost(hit.distance_mm, n, hit.normal, lambda, c),
-                None => pair_cost(2.0 * c, n, n, lambda, c),
-            })
-            .collect();
-        forward + reverse.iter().sum::<f64>() / reverse.len().max(1) as f64
-    };
-    let costs: Vec<f64> = candidates.par_iter().map(cost).collect();
-    let best = costs.iter().copied().fold(f64::INFINITY, f64::min);
-    let good: Vec<usize> =
-        (0..candidates.len()).filter(|&k| costs[k] <= best * (1.0 + settings.tolerance) + 1e-9).collect();
-    let (a, b) = candidates[good[random.below(good.len() as u64) as usize]];
-    // Refined off the grid by the mean offset of the close pairs: a swatch
-    // whose period is not a whole number of cells still lines up.
-    let mut t = DVec2::new(a as f64 * c, b as f64 * c);
-    for _ in 0..2 {
-        let (sum, count) = samples.iter().fold((DVec2::ZERO, 0usize), |(s, k), &(p, _)| {
-            match input.faces.closest(p - t.extend(0.0)) {
-                Some(hit) if hit.distance_mm < reach_mm => (s + (p - t.extend(0.0) - hit.point_mm).truncate(), k + 1),
-                _ => (s, k),
-            }
-        });
-        if count < 8 {
-            break;
-        }
-        let step = sum / count as f64;
-        t += step.clamp_length_max(c);
-    }
-    (a, b, t)
+    Neighbourhood { window, samples: thin(samples), faces: Faces::new(near.iter().copied()) }
 }
 
 fn window_box(window: &[(i64, i64)], c: f64) -> (DVec2, DVec2) {

@@ -1,0 +1,159 @@
+//! Geometry matching (the paper's section 2.3): the swatch tried at every
+//! grid translation that puts the seed cell inside it, each scored by
+//! D = (1 + λ·dist)(1 + |Δn|) both ways, from the output's points to the
+//! swatch and from the swatch's points to the output, then refined off the
+//! grid. The plane and curved bases share it: on a curved base the search
+//! runs in a patch laid flat, and the swatch's points are carried to the
+//! output through the patch.
+
+use std::collections::HashMap;
+
+use glam::{DVec2, DVec3};
+use rayon::prelude::*;
+
+use super::faces::Faces;
+use super::{Element, Settings, Swatch};
+use crate::random::SplitMix64;
+
+/// Output vertices sampled for the matching cost of one placement: enough
+/// to tell placements apart, few enough to try dozens per patch.
+pub(super) const MATCH_SAMPLES: usize = 400;
+
+/// Cells at the swatch's edge that a patch overlaps but does not claim:
+/// elements there are often cut short by the swatch's own border.
+pub(super) const MARGIN_CELLS: i64 = 1;
+
+/// The swatch indexed for matching: its faces, and its vertices by cell.
+pub(super) struct Input {
+    pub faces: Faces,
+    by_cell: HashMap<(i64, i64), Vec<(DVec3, DVec3)>>,
+    /// Whole cells across the swatch, along `x` and `y`.
+    pub cells: (i64, i64),
+    pub cell_mm: f64,
+}
+
+impl Input {
+    /// `swatch` indexed on cells `cell_mm` wide.
+    pub fn new(swatch: &Swatch, cell_mm: f64) -> Input {
+        let mut by_cell: HashMap<(i64, i64), Vec<(DVec3, DVec3)>> = HashMap::new();
+        for e in &swatch.elements {
+            for (v, n) in e.vertices.iter().zip(e.vertex_normals()) {
+                let c = ((v.x / cell_mm).floor() as i64, (v.y / cell_mm).floor() as i64);
+                by_cell.entry(c).or_default().push((*v, n));
+            }
+        }
+        let size = swatch.size_mm();
+        let cells = ((size.x / cell_mm).floor() as i64, (size.y / cell_mm).floor() as i64);
+        Input { faces: Faces::new(&swatch.elements), by_cell, cells, cell_mm }
+    }
+
+    /// Cells around the seed, each way, that matching compares.
+    pub fn window_half(&self) -> i64 {
+        let (sx, sy) = self.cells;
+        ((sx.min(sy) - 2 * MARGIN_CELLS - 1) / 4).max(0)
+    }
+}
+
+/// The output around a seed, as matching sees it.
+pub(super) struct Neighbourhood<'a> {
+    /// Processed cells around the seed (the seed's frame).
+    pub window: &'a [(i64, i64)],
+    /// Output points in the window with their normals (the seed's frame).
+    pub samples: Vec<(DVec3, DVec3)>,
+    /// The output's faces near the window (output space).
+    pub faces: Faces,
+}
+
+/// Every `stride`-th of `points`, at most [`MATCH_SAMPLES`] of them.
+pub(super) fn thin<T: Copy>(points: Vec<T>) -> Vec<T> {
+    let stride = points.len().div_ceil(MATCH_SAMPLES).max(1);
+    points.into_iter().step_by(stride).collect()
+}
+
+/// The matching cost of one pair of a point and its closest face (the
+/// paper's equation 1), with distance measured in grid cells.
+fn pair_cost(distance_mm: f64, normal: DVec3, face_normal: DVec3, lambda: f64, cell_mm: f64) -> f64 {
+    (1.0 + lambda * distance_mm / cell_mm) * (1.0 + (normal - face_normal).length())
+}
+
+/// The best translation of the swatch for the patch around `seed`: the grid
+/// offset `(a, b)` in cells, and the translation in mm refined from it.
+/// `to_output` carries a point and normal of the seed's frame to output
+/// space, or says it falls off the base.
+pub(super) fn best_translation(
+    input: &Input,
+    around: &Neighbourhood,
+    seed: (i64, i64),
+    settings: &Settings,
+    reach_mm: f64,
+    to_output: impl Fn(DVec3, DVec3) -> Option<(DVec3, DVec3)> + Sync,
+    random: &mut SplitMix64,
+) -> (i64, i64, DVec2) {
+    let (sx, sy) = input.cells;
+    let half = input.window_half();
+    let c = input.cell_mm;
+    let low = (seed.0 + half + MARGIN_CELLS + 1 - sx, seed.1 + half + MARGIN_CELLS + 1 - sy);
+    let high = (seed.0 - half - MARGIN_CELLS, seed.1 - half - MARGIN_CELLS);
+    let candidates: Vec<(i64, i64)> = (low.1..=high.1).flat_map(|b| (low.0..=high.0).map(move |a| (a, b))).collect();
+    let (window, samples) = (around.window, &around.samples);
+    let lambda = settings.lambda;
+    let cost = |&(a, b): &(i64, i64)| -> f64 {
+        if window.is_empty() {
+            return 0.0;
+        }
+        let t = DVec3::new(a as f64 * c, b as f64 * c, 0.0);
+        let forward: f64 = samples
+            .iter()
+            .map(|&(p, n)| match input.faces.closest(p - t) {
+                Some(hit) => pair_cost(hit.distance_mm, n, hit.normal, lambda, c),
+                None => pair_cost(2.0 * c, n, n, lambda, c),
+            })
+            .sum::<f64>()
+            / samples.len().max(1) as f64;
+        let mut reverse = Vec::new();
+        for &(i, j) in window {
+            if let Some(points) = input.by_cell.get(&(i - a, j - b)) {
+                reverse.extend(points.iter().map(|&(p, n)| (p + t, n)));
+            }
+        }
+        let reverse: Vec<f64> = thin(reverse)
+            .into_iter()
+            .map(|(p, n)| match to_output(p, n) {
+                Some((q, m)) => match around.faces.closest(q) {
+                    Some(hit) => pair_cost(hit.distance_mm, m, hit.normal, lambda, c),
+                    None => pair_cost(2.0 * c, m, m, lambda, c),
+                },
+                None => pair_cost(2.0 * c, n, n, lambda, c),
+            })
+            .collect();
+        forward + reverse.iter().sum::<f64>() / reverse.len().max(1) as f64
+    };
+    let costs: Vec<f64> = candidates.par_iter().map(cost).collect();
+    let best = costs.iter().copied().fold(f64::INFINITY, f64::min);
+    let good: Vec<usize> =
+        (0..candidates.len()).filter(|&k| costs[k] <= best * (1.0 + settings.tolerance) + 1e-9).collect();
+    let (a, b) = candidates[good[random.below(good.len() as u64) as usize]];
+    // Refined off the grid by the mean offset of the close pairs: a swatch
+    // whose period is not a whole number of cells still lines up.
+    let mut t = DVec2::new(a as f64 * c, b as f64 * c);
+    for _ in 0..2 {
+        let (sum, count) = samples.iter().fold((DVec2::ZERO, 0usize), |(s, k), &(p, _)| {
+            match input.faces.closest(p - t.extend(0.0)) {
+                Some(hit) if hit.distance_mm < reach_mm => (s + (p - t.extend(0.0) - hit.point_mm).truncate(), k + 1),
+                _ => (s, k),
+            }
+        });
+        if count < 8 {
+            break;
+        }
+        let step = sum / count as f64;
+        t += step.clamp_length_max(c);
+    }
+    (a, b, t)
+}
+
+/// The swatch's mean edge, times three: how near two surfaces must be to
+/// be taken as one.
+pub(super) fn reach_mm(swatch: &Swatch) -> f64 {
+    3.0 * swatch.elements.iter().map(Element::mean_edge_mm).sum::<f64>() / swatch.elements.len() as f64
+}
