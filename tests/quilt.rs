@@ -56,7 +56,7 @@ fn bad_input_fails_with_one_line_and_no_file() {
         (&["--swatch", "weave", "--base", "plane:40"], "not a base"),
         (&["--swatch", "weave", "--base", "plane:40x40", "--scale", "0"], "scale"),
         (&["--swatch", &path(&open), "--base", "plane:40x40"], "not a closed surface"),
-        (&["--swatch", "weave", "--base", "vase"], "not available yet"),
+        (&["--swatch", "weave", "--base", "teapot"], "no mesh file or built-in base"),
         (&["--swatch", "weave", "--base", "plane:100000x100000"], "at most"),
     ];
     for (args, expected) in cases {

@@ -7,7 +7,10 @@ use anyhow::{Result, bail};
 use clap::Parser;
 use tracery_core::control::Control;
 use tracery_core::mesh::read_mesh_file;
-use tracery_core::mesh_quilt::{SWATCH_NAMES, Settings, Swatch, builtin_swatch, make_product, parse_base};
+use tracery_core::mesh_quilt::{
+    SWATCH_NAMES, Settings, Swatch, builtin_swatch, make_product, make_surface_product, parse_base,
+};
+use tracery_core::surface::SurfaceMesh;
 
 use super::output::{OutputArgs, write_outputs};
 
@@ -18,7 +21,7 @@ pub struct QuiltArgs {
     /// An STL or OBJ swatch (mm; each connected part one element), or a built-in's name (see `tracery list --swatches`).
     #[arg(long)]
     pub swatch: String,
-    /// What to cover: plane:WIDTHxDEPTH (mm).
+    /// What to cover: plane:WIDTHxDEPTH (mm), a built-in base's name (see `tracery list --bases`), or an STL or OBJ model (mm).
     #[arg(long)]
     pub base: String,
     /// The swatch made this many times larger [default: 1].
@@ -66,11 +69,12 @@ pub fn run(args: QuiltArgs) -> Result<()> {
     }
     let settings = args.settings();
     settings.validate()?;
-    if !args.base.starts_with("plane:") {
-        bail!("quilting curved bases is not available yet: use --base plane:WIDTHxDEPTH");
-    }
-    let base = parse_base(&args.base)?;
     let swatch = load_swatch(&args.swatch)?;
-    let product = make_product(&swatch, base, &settings, &Control::default())?;
+    let product = if args.base.starts_with("plane:") {
+        make_product(&swatch, parse_base(&args.base)?, &settings, &Control::default())?
+    } else {
+        let surface = SurfaceMesh::new(super::surface::load_base(&args.base)?)?;
+        make_surface_product(&swatch, &surface, &settings, &Control::default())?
+    };
     write_outputs("quilt", &swatch.name, &args.base, &args.output, &product)
 }

@@ -77,9 +77,10 @@ fn pair_cost(distance_mm: f64, normal: DVec3, face_normal: DVec3, lambda: f64, c
 }
 
 /// The best translation of the swatch for the patch around `seed`: the grid
-/// offset `(a, b)` in cells, and the translation in mm refined from it.
-/// `to_output` carries a point and normal of the seed's frame to output
+/// offset `(a, b)` in cells, and the placement refined from it (turned
+/// too when `turn`). `to_output` carries a point and normal of the seed's frame to output
 /// space, or says it falls off the base.
+#[allow(clippy::too_many_arguments)]
 pub(super) fn best_translation(
     input: &Input,
     around: &Neighbourhood,
@@ -87,8 +88,9 @@ pub(super) fn best_translation(
     settings: &Settings,
     reach_mm: f64,
     to_output: impl Fn(DVec3, DVec3) -> Option<(DVec3, DVec3)> + Sync,
+    turn: bool,
     random: &mut SplitMix64,
-) -> (i64, i64, DVec2) {
+) -> (i64, i64, Placement) {
     let (sx, sy) = input.cells;
     let half = input.window_half();
     let c = input.cell_mm;
@@ -134,22 +136,66 @@ pub(super) fn best_translation(
         (0..candidates.len()).filter(|&k| costs[k] <= best * (1.0 + settings.tolerance) + 1e-9).collect();
     let (a, b) = candidates[good[random.below(good.len() as u64) as usize]];
     // Refined off the grid by the mean offset of the close pairs: a swatch
-    // whose period is not a whole number of cells still lines up.
-    let mut t = DVec2::new(a as f64 * c, b as f64 * c);
+    // whose period is not a whole number of cells still lines up. On a
+    // curved base the pairs also turn it (a 2D Procrustes fit): the field
+    // is matched only at the seed, and straight threads on the flattened
+    // patch drift from the neighbour's.
+    let mut placement = Placement { offset_mm: DVec2::new(a as f64 * c, b as f64 * c), turn: DVec2::X };
     for _ in 0..2 {
-        let (sum, count) = samples.iter().fold((DVec2::ZERO, 0usize), |(s, k), &(p, _)| {
-            match input.faces.closest(p - t.extend(0.0)) {
-                Some(hit) if hit.distance_mm < reach_mm => (s + (p - t.extend(0.0) - hit.point_mm).truncate(), k + 1),
-                _ => (s, k),
-            }
-        });
-        if count < 8 {
+        let pairs: Vec<(DVec2, DVec2)> = samples
+            .iter()
+            .filter_map(|&(p, _)| {
+                let hit = input.faces.closest(placement.to_swatch(p))?;
+                (hit.distance_mm < reach_mm).then(|| (p.truncate(), hit.point_mm.truncate()))
+            })
+            .collect();
+        if pairs.len() < 8 {
             break;
         }
-        let step = sum / count as f64;
-        t += step.clamp_length_max(c);
+        if turn {
+            let n = pairs.len() as f64;
+            let (pm, sm) = pairs.iter().fold((DVec2::ZERO, DVec2::ZERO), |(a, b), &(p, q)| (a + p, b + q));
+            let (pm, sm) = (pm / n, sm / n);
+            let (dot, cross) = pairs.iter().fold((0.0, 0.0), |(d, x), &(p, q)| {
+                let (p, q) = (p - pm, q - sm);
+                (d + q.dot(p), x + q.perp_dot(p))
+            });
+            let angle = cross.atan2(dot).clamp(-MAX_TURN, MAX_TURN);
+            let turn = DVec2::from_angle(angle);
+            let offset = pm - turn.rotate(sm);
+            placement =
+                Placement { offset_mm: placement.offset_mm + (offset - placement.offset_mm).clamp_length_max(c), turn };
+        } else {
+            let sum: DVec2 = pairs.iter().map(|&(p, q)| p - placement.offset_mm - placement.turn.rotate(q)).sum();
+            placement.offset_mm += (sum / pairs.len() as f64).clamp_length_max(c);
+        }
     }
-    (a, b, t)
+    (a, b, placement)
+}
+
+/// Largest turn the refinement gives a patch, radians.
+const MAX_TURN: f64 = 0.3;
+
+/// Where the swatch goes in the seed's frame: turned, then moved.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(super) struct Placement {
+    /// The move, mm.
+    pub offset_mm: DVec2,
+    /// The turn, as a unit vector (`X` for none).
+    pub turn: DVec2,
+}
+
+impl Placement {
+    /// A swatch point in the seed's frame.
+    pub fn to_frame(self, p: DVec3) -> DVec3 {
+        (self.turn.rotate(p.truncate()) + self.offset_mm).extend(p.z)
+    }
+
+    /// A point of the seed's frame in the swatch's.
+    pub fn to_swatch(self, p: DVec3) -> DVec3 {
+        let turn_back = DVec2::new(self.turn.x, -self.turn.y);
+        turn_back.rotate(p.truncate() - self.offset_mm).extend(p.z)
+    }
 }
 
 /// The swatch's mean edge, times three: how near two surfaces must be to

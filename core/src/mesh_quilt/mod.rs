@@ -6,6 +6,7 @@
 //! ([`min_cut_keep`]) and stitching ([`quilt_plane`]).
 
 mod builtin;
+mod curved;
 mod cut;
 mod deform;
 mod element;
@@ -24,15 +25,18 @@ mod swatch;
 mod zones;
 
 pub use builtin::{SWATCH_NAMES, builtin_swatch};
+pub use curved::{ShellReport, quilt_surface};
 pub use cut::{FORCED, min_cut_keep};
 pub use deform::{Constraint, deform};
 pub use element::Element;
 pub use error::QuiltError;
 pub use faces::{Closest, Faces};
 pub use merge::MergeCounts;
+pub use patch::MAX_AREA_DISTORTION;
 pub use planar::{MAX_QUILT_TRIANGLES, Quilt, QuiltCounts, quilt_plane};
-pub use product::{Base, make_product, parse_base};
+pub use product::{Base, make_product, make_surface_product, parse_base};
 pub use settings::{MAX_CELLS_ACROSS, MIN_CELLS_ACROSS, Settings};
 pub use shapes::{lathe, lathe_ring, torus, tube};
+pub use shell::{Shell, ShellStretch};
 pub use stitch::stitch;
 pub use swatch::{MAX_SWATCH_TRIANGLES, Swatch};

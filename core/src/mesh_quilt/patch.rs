@@ -98,8 +98,9 @@ pub(super) struct Patch {
 }
 
 impl Patch {
-    /// Lays `faces` of `surface` flat, with `seed`'s centroid at `seed_uv`
-    /// and `direction` (a tangent at the seed) along `+u`.
+    /// Lays `faces` of `surface` (nearest the seed first) flat, with
+    /// `seed`'s centroid at `seed_uv` and `direction` (a tangent at the
+    /// seed) along `+u`.
     pub fn lay_flat(
         surface: &SurfaceMesh,
         faces: Vec<u32>,
@@ -138,14 +139,18 @@ impl Patch {
             let [a, b, c] = t.map(|v| uv[v as usize]);
             0.5 * (b - a).perp_dot(c - a)
         };
-        let total_flat: f64 = triangles.iter().map(|t| area_uv(&uv, t)).sum();
-        if total_flat.abs() <= f64::MIN_POSITIVE {
+        // The scale is true near the seed, where the patch is matched and
+        // most of what it adds lies: the faces are nearest first, and the
+        // nearest quarter sets it.
+        let core = (triangles.len() / 4).max(1);
+        let core_flat: f64 = triangles[..core].iter().map(|t| area_uv(&uv, t)).sum();
+        if core_flat.abs() <= f64::MIN_POSITIVE {
             return Err(Unflat::Solve);
         }
         // A mirror image (the solve does not know which side is up) is
         // turned over: patch triangles run counter-clockwise like the base's.
-        let flip = if total_flat < 0.0 { -1.0 } else { 1.0 };
-        let scale = (area_3d.iter().sum::<f64>() / total_flat.abs()).sqrt();
+        let flip = if core_flat < 0.0 { -1.0 } else { 1.0 };
+        let scale = (area_3d[..core].iter().sum::<f64>() / core_flat.abs()).sqrt();
         for p in &mut uv {
             *p = DVec2::new(p.x, flip * p.y) * scale;
         }

@@ -5,6 +5,7 @@
 
 use glam::{DVec2, DVec3};
 
+use super::curved::ShellReport;
 use super::faces::Faces;
 use super::matching::{Input, MARGIN_CELLS, Neighbourhood, best_translation, reach_mm, thin};
 use super::merge::{MergeCounts, merge_patch};
@@ -23,6 +24,8 @@ pub struct Quilt {
     pub elements: Vec<Element>,
     /// What happened on the way.
     pub counts: QuiltCounts,
+    /// The shell's stretch and the patches' distortion, on a curved base.
+    pub shell: Option<ShellReport>,
 }
 
 /// Counts of what quilting did, for reports and tests.
@@ -159,9 +162,9 @@ pub fn quilt_plane(
             .collect();
         let around = neighbourhood(&quilt.elements, &grid, &window);
         let to_output = |p: DVec3, n: DVec3| Some((p, n));
-        let (a, b, offset) = best_translation(&input, &around, seed, settings, reach_mm, to_output, &mut random);
+        let (a, b, offset) = best_translation(&input, &around, seed, settings, reach_mm, to_output, false, &mut random);
         grid.footprint = [a + MARGIN_CELLS, b + MARGIN_CELLS, a + sx - MARGIN_CELLS, b + sy - MARGIN_CELLS];
-        let placed: Vec<Element> = swatch.elements.iter().map(|e| e.translated(offset.extend(0.0))).collect();
+        let placed: Vec<Element> = swatch.elements.iter().map(|e| e.translated(offset.offset_mm.extend(0.0))).collect();
         let counts = merge_patch(&mut quilt.elements, placed, &grid, settings, reach_mm);
         quilt.counts.merges.add(&counts);
         let [i0, j0, i1, j1] = grid.footprint;
@@ -204,8 +207,6 @@ fn overlaps(a: (DVec2, DVec2), b: (DVec2, DVec2)) -> bool {
 /// Leaves out elements lying mostly outside the area, open ones, and
 /// fragments far smaller than the swatch's smallest element.
 fn finish(quilt: &mut Quilt, swatch: &Swatch, width_mm: f64, depth_mm: f64) {
-    let volume = |e: &Element| e.to_mesh().signed_volume().abs();
-    let smallest = swatch.elements.iter().map(volume).fold(f64::INFINITY, f64::min);
     let before = quilt.elements.len();
     quilt.elements.retain(|e| {
         let (lo, hi) = e.footprint();
@@ -221,6 +222,14 @@ fn finish(quilt: &mut Quilt, swatch: &Swatch, width_mm: f64, depth_mm: f64) {
             v.z = v.z.clamp(0.0, height);
         }
     }
+    keep_whole(quilt, swatch);
+}
+
+/// Leaves out open elements and fragments far smaller than the swatch's
+/// smallest element.
+pub(super) fn keep_whole(quilt: &mut Quilt, swatch: &Swatch) {
+    let volume = |e: &Element| e.to_mesh().signed_volume().abs();
+    let smallest = swatch.elements.iter().map(volume).fold(f64::INFINITY, f64::min);
     let before = quilt.elements.len();
     quilt.elements.retain(|e| e.is_closed() && volume(e) >= 0.25 * smallest);
     quilt.counts.fragments = before - quilt.elements.len();

@@ -1,10 +1,11 @@
 //! [`make_product`]: a quilt as the [`Product`] every mode returns, its
 //! elements one mesh of separate closed shells, with its figures.
 
-use super::{QuiltError, Settings, Swatch, quilt_plane};
+use super::{Quilt, QuiltError, Settings, Swatch, quilt_plane, quilt_surface};
 use crate::control::Control;
 use crate::mesh::Mesh;
 use crate::product::{Fact, Product};
+use crate::surface::SurfaceMesh;
 
 /// What the quilt covers.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -50,6 +51,39 @@ pub fn make_product(
     let swatch = swatch.scaled(settings.scale);
     let Base::Plane { width_mm, depth_mm } = base;
     let quilt = product.timings.time("quilt", || quilt_plane(&swatch, width_mm, depth_mm, settings, control))?;
+    describe(&mut product, &quilt, &swatch);
+    Ok(product)
+}
+
+/// Quilts the curved `surface` with `swatch` at the settings' scale, in a
+/// shell as thick as the scaled swatch: the texture alone, its elements one
+/// mesh of closed shells, with the shell's stretch before and after tuning
+/// among the facts.
+pub fn make_surface_product(
+    swatch: &Swatch,
+    surface: &SurfaceMesh,
+    settings: &Settings,
+    control: &Control,
+) -> Result<Product, QuiltError> {
+    settings.validate()?;
+    let mut product = Product::default();
+    let swatch = swatch.scaled(settings.scale);
+    let quilt = product.timings.time("quilt", || quilt_surface(&swatch, surface, settings, control))?;
+    describe(&mut product, &quilt, &swatch);
+    if let Some(shell) = quilt.shell {
+        let facts = &mut product.facts;
+        facts.push("shell_l2_stretch_normals", Fact::Number(shell.before.l2));
+        facts.push("shell_inverted_normals", Fact::Count(shell.before.inverted));
+        facts.push("shell_l2_stretch", Fact::Number(shell.after.l2));
+        facts.push("shell_inverted", Fact::Count(shell.after.inverted));
+        facts.push("max_patch_area_distortion", Fact::Number(shell.max_patch_distortion));
+        facts.push("bare_seeds", Fact::Count(shell.bare_seeds));
+    }
+    Ok(product)
+}
+
+/// The quilt's elements as the product's mesh, with its counts.
+fn describe(product: &mut Product, quilt: &Quilt, swatch: &Swatch) {
     let mut mesh = Mesh::default();
     for e in &quilt.elements {
         mesh.append(&e.to_mesh());
@@ -71,5 +105,4 @@ pub fn make_product(
     facts.push("fragments_removed", Fact::Count(quilt.counts.fragments));
     facts.push("faces", Fact::Count(mesh.triangles.len()));
     product.mesh_mm = Some(mesh);
-    Ok(product)
 }

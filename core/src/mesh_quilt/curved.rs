@@ -1,0 +1,308 @@
+//! Mesh quilting over a curved base (the paper's section 3.1). The base's
+//! faces take the place of the plane's grid: the most constrained
+//! unprocessed face seeds a patch grown along the surface, laid flat by
+//! LSCM and turned to the guidance field; the swatch is matched over
+//! translations in that flat frame, carried into the shell over the base,
+//! and merged with what is there. Quilting ends when every face is covered.
+//!
+//! One departure from the paper: elements are kept in space (embedded in
+//! the shell as each patch places them), not as face, barycentric
+//! coordinates and height. Merging, deforming, stitching and the crossing
+//! test then work where the print will be, and a thread that runs across
+//! many patches never has to be laid flat whole again.
+
+use std::collections::HashMap;
+
+use glam::{DVec2, DVec3};
+
+use super::faces::Faces;
+use super::matching::{Input, MARGIN_CELLS, Neighbourhood, best_translation, reach_mm, thin};
+use super::merge::merge_patch;
+use super::patch::{FaceGraph, Patch};
+use super::shell::{Shell, ShellStretch};
+use super::zones::{Zone, Zones, boxes_overlap};
+use super::{Element, MAX_QUILT_TRIANGLES, Quilt, QuiltError, Settings, Swatch};
+use crate::control::Control;
+use crate::random::SplitMix64;
+use crate::surface::SurfaceMesh;
+
+/// Tries at growing a patch, each smaller than the last, before a seed is
+/// given up and left bare.
+const PATCH_TRIES: usize = 6;
+
+/// How much smaller each try's patch is.
+const PATCH_SHRINK: f64 = 0.7;
+
+/// Cells around a patch's footprint whose faces' distances are kept:
+/// merging asks how near the footprint a point is, up to a few cells.
+const NEAR_CELLS: f64 = 4.0;
+
+/// What the shell and the patches did, for the report.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct ShellReport {
+    /// The shell offset along the base's normals.
+    pub before: ShellStretch,
+    /// The shell as used, tuned to the least stretch.
+    pub after: ShellStretch,
+    /// The largest area distortion of a patch laid flat.
+    pub max_patch_distortion: f64,
+    /// Seeds whose patch could not be laid flat at any size: left bare.
+    pub bare_seeds: usize,
+}
+
+/// The guidance field's direction over face `f`: around the `z` axis (the
+/// axis a lathe-turned vase or cup stands on), in the face's plane; any
+/// tangent where that vanishes (on the axis).
+pub(super) fn around_axis(surface: &SurfaceMesh, f: u32) -> DVec3 {
+    let normal = surface.face_normal(f);
+    let centre = surface.point(f, [1.0 / 3.0; 3]);
+    let around = DVec3::Z.cross(centre);
+    let tangent = around - normal * around.dot(normal);
+    tangent.try_normalize().unwrap_or_else(|| normal.any_orthonormal_vector())
+}
+
+/// The layout of the base for one patch: which faces are done, which the
+/// patch claims, and how far each nearby face is from what it claims.
+struct SurfaceZones<'a> {
+    surface: &'a SurfaceMesh,
+    processed: &'a [bool],
+    footprint: Vec<bool>,
+    near: HashMap<u32, f64>,
+    cell_mm: f64,
+    near_box: (DVec3, DVec3),
+}
+
+impl Zones for SurfaceZones<'_> {
+    fn cell_mm(&self) -> f64 {
+        self.cell_mm
+    }
+
+    fn zone(&self, p: DVec3) -> Zone {
+        let f = self.surface.closest_point(p.to_array()).face as usize;
+        match (self.processed[f], self.footprint[f]) {
+            (true, true) => Zone::Overlap,
+            (true, false) => Zone::Old,
+            (false, true) => Zone::New,
+            (false, false) => Zone::Outside,
+        }
+    }
+
+    fn near_footprint(&self, p: DVec3, cells: f64) -> bool {
+        let f = self.surface.closest_point(p.to_array()).face;
+        self.near.get(&f).is_some_and(|&d| d <= cells * self.cell_mm)
+    }
+
+    fn near_box(&self, margin_mm: f64) -> (DVec3, DVec3) {
+        (self.near_box.0 - DVec3::splat(margin_mm), self.near_box.1 + DVec3::splat(margin_mm))
+    }
+}
+
+/// Quilts `surface` with `swatch` (already scaled) in a shell as thick as
+/// the swatch. Faces the model stands on (facing down at its lowest
+/// level) are left bare, so it still stands flat.
+pub fn quilt_surface(
+    swatch: &Swatch,
+    surface: &SurfaceMesh,
+    settings: &Settings,
+    control: &Control,
+) -> Result<Quilt, QuiltError> {
+    settings.validate()?;
+    let size = swatch.size_mm();
+    let triangles = surface.triangles();
+    let area_mm2: f64 = (0..triangles.len() as u32)
+        .map(|f| {
+            let [a, b, c] = triangles[f as usize].map(|v| surface.positions()[v as usize]);
+            0.5 * (b - a).cross(c - a).length()
+        })
+        .sum();
+    let estimate = (swatch.triangle_count() as f64 * area_mm2 / (size.x * size.y)) as usize;
+    if estimate > MAX_QUILT_TRIANGLES {
+        return Err(QuiltError::OutputTooLarge { triangles: estimate, max: MAX_QUILT_TRIANGLES });
+    }
+    let cell_mm = size.x.min(size.y) / settings.cells_across as f64;
+    let input = Input::new(swatch, cell_mm);
+    let reach = reach_mm(swatch);
+    let graph = FaceGraph::new(surface);
+    let before = Shell::along_normals(surface, size.z).stretch(surface);
+    let shell = Shell::least_stretch(surface, size.z, settings.seed);
+    let mut report = ShellReport { before, after: shell.stretch(surface), max_patch_distortion: 1.0, bare_seeds: 0 };
+    let lowest = surface.positions().iter().map(|p| p.z).fold(f64::INFINITY, f64::min);
+    let mut processed: Vec<bool> = (0..triangles.len() as u32)
+        .map(|f| surface.face_normal(f).z < -0.9 && graph.centres[f as usize].z < lowest + 0.5 * cell_mm)
+        .collect();
+    let (sx, sy) = input.cells;
+    let half = input.window_half();
+    let radius_mm = (sx as f64).hypot(sy as f64) * cell_mm + 2.0 * reach;
+    let mut random = SplitMix64::new(settings.seed);
+    let mut quilt = Quilt::default();
+    let total = processed.len() as f32;
+    // The seed sits at the middle of cell (0, 0) of its patch.
+    let seed_uv = DVec2::splat(0.5 * cell_mm);
+    while let Some(seed) = most_constrained(&graph, &processed) {
+        control.check()?;
+        let Some(patch) = grow_patch(surface, &graph, seed, radius_mm, seed_uv, &mut report) else {
+            processed[seed as usize] = true;
+            report.bare_seeds += 1;
+            continue;
+        };
+        let to_output = |p: DVec3, n: DVec3| -> Option<(DVec3, DVec3)> {
+            let (f, b) = patch.locate(p.truncate())?;
+            let normal = surface.face_normal(f);
+            let u = patch.u_axis(f)?;
+            let v = normal.cross(u);
+            Some((shell.point(surface, f, b, p.z), (u * n.x + v * n.y + normal * n.z).normalize_or_zero()))
+        };
+        let window: Vec<(i64, i64)> = (-half..=half)
+            .flat_map(|dj| (-half..=half).map(move |di| (di, dj)))
+            .filter(|&(i, j)| {
+                let centre = DVec2::new(i as f64 + 0.5, j as f64 + 0.5) * cell_mm;
+                patch.locate(centre).is_some_and(|(f, _)| processed[f as usize])
+            })
+            .collect();
+        let around = neighbourhood(surface, &patch, &quilt.elements, &window, cell_mm);
+        let (_, _, offset) = best_translation(&input, &around, (0, 0), settings, reach, to_output, true, &mut random);
+        // The swatch's cells it claims, in the swatch's own frame.
+        let claimed = (
+            DVec2::splat(MARGIN_CELLS as f64) * cell_mm,
+            DVec2::new((sx - MARGIN_CELLS) as f64, (sy - MARGIN_CELLS) as f64) * cell_mm,
+        );
+        let mut footprint = vec![false; triangles.len()];
+        let mut claimed_faces = vec![seed];
+        for &f in patch.faces() {
+            let centre = patch
+                .to_flat(f, [1.0 / 3.0; 3])
+                .map_or(DVec2::INFINITY, |p| offset.to_swatch(p.extend(0.0)).truncate());
+            if centre.cmpge(claimed.0).all() && centre.cmplt(claimed.1).all() {
+                claimed_faces.push(f);
+            }
+        }
+        for &f in &claimed_faces {
+            footprint[f as usize] = true;
+        }
+        let near: HashMap<u32, f64> =
+            graph.within(&claimed_faces, (NEAR_CELLS + reach / cell_mm) * cell_mm).into_iter().collect();
+        let near_box = claimed_faces.iter().fold((DVec3::INFINITY, DVec3::NEG_INFINITY), |(lo, hi), &f| {
+            let p = graph.centres[f as usize];
+            (lo.min(p), hi.max(p))
+        });
+        let grow = DVec3::splat(size.z + cell_mm);
+        let zones = SurfaceZones {
+            surface,
+            processed: &processed,
+            footprint,
+            near,
+            cell_mm,
+            near_box: (near_box.0 - grow, near_box.1 + grow),
+        };
+        let placed: Vec<Element> = swatch
+            .elements
+            .iter()
+            .filter_map(|e| {
+                let vertices: Option<Vec<DVec3>> = e
+                    .vertices
+                    .iter()
+                    .map(|&v| {
+                        let q = offset.to_frame(v);
+                        let (f, b) = patch.locate(q.truncate())?;
+                        Some(shell.point(surface, f, b, q.z))
+                    })
+                    .collect();
+                Some(Element { vertices: vertices?, triangles: e.triangles.clone() })
+            })
+            .collect();
+        let counts = merge_patch(&mut quilt.elements, placed, &zones, settings, reach);
+        quilt.counts.merges.add(&counts);
+        for &f in &claimed_faces {
+            processed[f as usize] = true;
+        }
+        quilt.counts.patches += 1;
+        control.report(processed.iter().filter(|&&p| p).count() as f32 / total);
+    }
+    super::planar::keep_whole(&mut quilt, swatch);
+    quilt.shell = Some(report);
+    Ok(quilt)
+}
+
+/// The unprocessed face with the most processed faces within two steps
+/// across edges; the first face when none is processed.
+fn most_constrained(graph: &FaceGraph, processed: &[bool]) -> Option<u32> {
+    let mut best: Option<(u32, usize)> = None;
+    for f in 0..processed.len() {
+        if processed[f] {
+            continue;
+        }
+        let ring = &graph.neighbours[f];
+        let mut score = ring.iter().filter(|&&g| processed[g as usize]).count();
+        if score > 0 {
+            score += ring
+                .iter()
+                .flat_map(|&g| graph.neighbours[g as usize].iter())
+                .filter(|&&h| h as usize != f && processed[h as usize])
+                .count();
+        }
+        if best.is_none_or(|(_, s)| score > s) {
+            best = Some((f as u32, score));
+        }
+    }
+    best.map(|(f, _)| f)
+}
+
+/// The patch around `seed`, shrunk until it lays flat within the limits.
+fn grow_patch(
+    surface: &SurfaceMesh,
+    graph: &FaceGraph,
+    seed: u32,
+    radius_mm: f64,
+    seed_uv: DVec2,
+    report: &mut ShellReport,
+) -> Option<Patch> {
+    let mut radius = radius_mm;
+    for _ in 0..PATCH_TRIES {
+        let faces: Vec<u32> = graph.within(&[seed], radius).into_iter().map(|(f, _)| f).collect();
+        if let Ok(patch) = Patch::lay_flat(surface, faces, seed, around_axis(surface, seed), seed_uv) {
+            report.max_patch_distortion = report.max_patch_distortion.max(patch.distortion);
+            return Some(patch);
+        }
+        radius *= PATCH_SHRINK;
+    }
+    None
+}
+
+/// The output around the seed in the patch's flat frame: its vertices over
+/// the window's cells, sampled, and its faces near the patch (in space).
+fn neighbourhood<'a>(
+    surface: &SurfaceMesh,
+    patch: &Patch,
+    output: &[Element],
+    window: &'a [(i64, i64)],
+    cell_mm: f64,
+) -> Neighbourhood<'a> {
+    let faces: Vec<DVec3> = window
+        .iter()
+        .filter_map(|&(i, j)| {
+            let (f, b) = patch.locate(DVec2::new(i as f64 + 0.5, j as f64 + 0.5) * cell_mm)?;
+            Some(surface.point(f, b))
+        })
+        .collect();
+    let window_box = faces.iter().fold((DVec3::INFINITY, DVec3::NEG_INFINITY), |(lo, hi), &p| (lo.min(p), hi.max(p)));
+    let grow = DVec3::splat(2.0 * cell_mm);
+    let window_box = (window_box.0 - grow, window_box.1 + grow);
+    let near: Vec<&Element> = output.iter().filter(|e| boxes_overlap(e.bounds(), window_box)).collect();
+    let mut samples: Vec<(DVec3, DVec3)> = Vec::new();
+    for e in &near {
+        for (&p, n) in e.vertices.iter().zip(e.vertex_normals()) {
+            let on = surface.closest_point(p.to_array());
+            let Some(flat) = patch.to_flat(on.face, on.barycentric) else { continue };
+            let cell = ((flat.x / cell_mm).floor() as i64, (flat.y / cell_mm).floor() as i64);
+            if !window.contains(&cell) {
+                continue;
+            }
+            let normal = surface.face_normal(on.face);
+            let Some(u) = patch.u_axis(on.face) else { continue };
+            let v = normal.cross(u);
+            let height = (p - on.position_mm).dot(normal);
+            samples.push((flat.extend(height), DVec3::new(n.dot(u), n.dot(v), n.dot(normal))));
+        }
+    }
+    Neighbourhood { window, samples: thin(samples), faces: Faces::new(near.iter().copied()) }
+}
