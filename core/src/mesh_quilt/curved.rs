@@ -18,7 +18,7 @@ use glam::{DVec2, DVec3};
 use super::faces::Faces;
 use super::matching::{Input, MARGIN_CELLS, Neighbourhood, best_translation, reach_mm, thin};
 use super::merge::merge_patch;
-use super::patch::{FaceGraph, Patch};
+use super::patch::{FaceGraph, Patch, triangle_area_3d};
 use super::shell::{Shell, ShellStretch};
 use super::zones::{Zone, Zones, boxes_overlap};
 use super::{Element, MAX_QUILT_TRIANGLES, Quilt, QuiltError, Settings, Swatch};
@@ -109,12 +109,7 @@ pub fn quilt_surface(
     settings.validate()?;
     let size = swatch.size_mm();
     let triangles = surface.triangles();
-    let area_mm2: f64 = (0..triangles.len() as u32)
-        .map(|f| {
-            let [a, b, c] = triangles[f as usize].map(|v| surface.positions()[v as usize]);
-            0.5 * (b - a).cross(c - a).length()
-        })
-        .sum();
+    let area_mm2: f64 = triangles.iter().map(|t| triangle_area_3d(t.map(|v| surface.positions()[v as usize]))).sum();
     let estimate = (swatch.triangle_count() as f64 * area_mm2 / (size.x * size.y)) as usize;
     if estimate > MAX_QUILT_TRIANGLES {
         return Err(QuiltError::OutputTooLarge { triangles: estimate, max: MAX_QUILT_TRIANGLES });
@@ -160,7 +155,8 @@ pub fn quilt_surface(
             })
             .collect();
         let around = neighbourhood(surface, &patch, &quilt.elements, &window, cell_mm);
-        let (_, _, offset) = best_translation(&input, &around, (0, 0), settings, reach, to_output, true, &mut random);
+        let (_, _, placement) =
+            best_translation(&input, &around, (0, 0), settings, reach, to_output, true, &mut random);
         // The swatch's cells it claims, in the swatch's own frame.
         let claimed = (
             DVec2::splat(MARGIN_CELLS as f64) * cell_mm,
@@ -171,7 +167,7 @@ pub fn quilt_surface(
         for &f in patch.faces() {
             let centre = patch
                 .to_flat(f, [1.0 / 3.0; 3])
-                .map_or(DVec2::INFINITY, |p| offset.to_swatch(p.extend(0.0)).truncate());
+                .map_or(DVec2::INFINITY, |p| placement.to_swatch(p.extend(0.0)).truncate());
             if centre.cmpge(claimed.0).all() && centre.cmplt(claimed.1).all() {
                 claimed_faces.push(f);
             }
@@ -202,7 +198,7 @@ pub fn quilt_surface(
                     .vertices
                     .iter()
                     .map(|&v| {
-                        let q = offset.to_frame(v);
+                        let q = placement.to_frame(v);
                         let (f, b) = patch.locate(q.truncate())?;
                         Some(shell.point(surface, f, b, q.z))
                     })

@@ -94,18 +94,7 @@ impl Element {
 
     /// The vertices next to each vertex (the 1-ring), sorted.
     pub fn neighbours(&self) -> Vec<Vec<u32>> {
-        let mut ring: Vec<Vec<u32>> = vec![Vec::new(); self.vertices.len()];
-        for t in &self.triangles {
-            for k in 0..3 {
-                ring[t[k] as usize].push(t[(k + 1) % 3]);
-                ring[t[(k + 1) % 3] as usize].push(t[k]);
-            }
-        }
-        for r in &mut ring {
-            r.sort_unstable();
-            r.dedup();
-        }
-        ring
+        crate::mesh::vertex_rings(self.vertices.len(), &self.triangles)
     }
 
     /// For each triangle, the triangles sharing an edge with it.

@@ -209,7 +209,7 @@ impl Patch {
 }
 
 /// Area of a triangle in space.
-fn triangle_area_3d([a, b, c]: [DVec3; 3]) -> f64 {
+pub(super) fn triangle_area_3d([a, b, c]: [DVec3; 3]) -> f64 {
     0.5 * (b - a).cross(c - a).length()
 }
 

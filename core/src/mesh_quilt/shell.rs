@@ -137,17 +137,7 @@ impl Shell {
     /// search cannot climb out of, since undoing it moves many vertices.
     fn unfold(&mut self, surface: &SurfaceMesh) {
         let n = self.directions.len();
-        let mut ring: Vec<Vec<u32>> = vec![Vec::new(); n];
-        for t in surface.triangles() {
-            for k in 0..3 {
-                ring[t[k] as usize].push(t[(k + 1) % 3]);
-                ring[t[(k + 1) % 3] as usize].push(t[k]);
-            }
-        }
-        for r in &mut ring {
-            r.sort_unstable();
-            r.dedup();
-        }
+        let ring = crate::mesh::vertex_rings(n, surface.triangles());
         let h = self.height_mm;
         let p = surface.positions();
         for _ in 0..UNFOLD_ROUNDS {
