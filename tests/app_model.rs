@@ -241,3 +241,65 @@ fn a_shade_added_on_the_cone_makes_a_lamp_in_one_body() {
     assert!(harness.state().doc.model.shades.is_empty(), "undo removes the shade");
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+#[test]
+fn texture_turned_on_covers_the_cone_and_prints_with_it_as_one_body() {
+    let (dir, stl_path, three_mf, mut harness) = model_export("texture");
+    harness.state_mut().doc.model.base = tracery::document::BaseRef::Builtin("cone".into());
+    harness.run_steps(2);
+    click_in_side_panel(&mut harness, "Cover the model with texture");
+    let app = harness.state();
+    assert!(app.doc.model.texture.on, "{:?}", app.message);
+    assert!(app.doc.model.with_model, "texture on the model is printed with it");
+    assert_eq!(app.doc.model.texture.swatch, "rivets");
+    settle_model(&mut harness);
+    let app = harness.state();
+    let Some(JobState::Done(Ok(texture))) = app.texture_state() else {
+        panic!("no texture: {:?}", app.texture_state().map(|_| ()));
+    };
+    let rivets = texture.facts.count("elements").unwrap();
+    assert!(rivets > 30, "only {rivets} rivets on the cone");
+    let object = export_one_body(&mut harness, &stl_path, &three_mf);
+    // The cone is in it whole, with the rivets standing out of it: each
+    // rivet adds at least a little volume.
+    let cone = SurfaceMesh::new(builtin_base("cone").unwrap()).unwrap().mesh().signed_volume();
+    let added = object.signed_volume() - cone;
+    assert!(added > 2.0 * rivets as f64, "{added:.0} mm³ of texture for {rivets} rivets");
+    // It still stands on the bed: nothing below the cone's foot.
+    let lowest = object.vertices.iter().map(|v| v[2]).fold(f64::MAX, f64::min);
+    assert!(lowest > -1e-6, "the object reaches {lowest} mm below the bed");
+    // Undo turns the texture off again.
+    harness.key_press_modifiers(egui::Modifiers::COMMAND, egui::Key::Z);
+    harness.run_steps(2);
+    assert!(!harness.state().doc.model.texture.on, "undo turns the texture off");
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+#[test]
+fn growing_texture_shows_progress_and_stops_when_asked() {
+    let (dir, _, _, mut harness) = model_export("texture-stop");
+    {
+        // A fine weave over the vase takes long enough to be stopped.
+        let texture = &mut harness.state_mut().doc.model.texture;
+        texture.swatch = "weave".into();
+        texture.settings.scale = 0.5;
+    }
+    click_in_side_panel(&mut harness, "Cover the model with texture");
+    let deadline = Instant::now() + Duration::from_secs(30);
+    while !matches!(harness.state().texture_state(), Some(JobState::Running { .. })) && Instant::now() < deadline {
+        harness.step();
+        std::thread::sleep(Duration::from_millis(20));
+    }
+    assert!(matches!(harness.state().texture_state(), Some(JobState::Running { .. })), "the texture never started");
+    harness.run_steps(2);
+    // The status bar says what is running, beside its progress bar.
+    harness.get_by_label("Growing the texture…");
+    harness.get_by_label("Stop").click();
+    harness.run_steps(2);
+    let app = harness.state();
+    assert!(!app.doc.model.texture.on, "Stop turns the texture off");
+    assert!(!app.busy(), "nothing is left running");
+    assert!(app.texture_state().is_none(), "the job is dropped, not left to finish");
+    assert_eq!(app.doc.model.texture.swatch, "weave", "the choices are kept for later");
+    let _ = std::fs::remove_dir_all(&dir);
+}

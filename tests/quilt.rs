@@ -46,18 +46,40 @@ fn a_plane_of_rivets_is_one_closed_body_per_element() {
 }
 
 #[test]
+fn rivets_united_with_the_cone_are_one_body_standing_on_the_bed() {
+    let dir = tempdir("quilt-cone");
+    let stl = dir.join("c.stl");
+    let json = report_of(
+        "quilt",
+        &["--swatch", "rivets", "--base", "cone", "--scale", "1.5", "--with-base", "--stl", &path(&stl)],
+        &dir.join("c.json"),
+    );
+    let check = check_stl(&stl);
+    assert_eq!((check.open_edges, check.misoriented_edges), (0, 0), "{check:?}");
+    assert_eq!(check.shells, 1, "the cone and its rivets print as one body: {json}");
+    // Rivets round the foot were cut flat: nothing hangs below the bed.
+    assert!(field(&json, "cut_at_floor").parse::<usize>().unwrap() > 0, "{json}");
+    let lowest = stl_vertices(&stl).iter().map(|v| v[2]).fold(f64::MAX, f64::min);
+    assert!(lowest > -1e-4, "a vertex {lowest} mm below the bed");
+    let elements: usize = field(&json, "elements").parse().unwrap();
+    assert!(elements > 20, "{json}");
+}
+
+#[test]
 fn bad_input_fails_with_one_line_and_no_file() {
     let dir = tempdir("quilt-bad");
     let open = dir.join("open.obj");
     std::fs::write(&open, "v 0 0 0\nv 4 0 0\nv 0 4 0\nv 0 0 1\nf 1 3 2\nf 1 2 4\nf 2 3 4\n").unwrap();
     let stl = dir.join("out.stl");
-    let cases: [(&[&str], &str); 6] = [
+    let cases: [(&[&str], &str); 8] = [
         (&["--swatch", "lace", "--base", "plane:40x40"], "no mesh file or built-in swatch"),
         (&["--swatch", "weave", "--base", "plane:40"], "not a base"),
         (&["--swatch", "weave", "--base", "plane:40x40", "--scale", "0"], "scale"),
         (&["--swatch", &path(&open), "--base", "plane:40x40"], "not a closed surface"),
         (&["--swatch", "weave", "--base", "teapot"], "no mesh file or built-in base"),
         (&["--swatch", "weave", "--base", "plane:100000x100000"], "at most"),
+        (&["--swatch", "weave", "--base", "plane:40x40", "--with-base"], "no model to unite"),
+        (&["--swatch", "weave", "--base", "vase", "--sink-mm", "5"], "sink"),
     ];
     for (args, expected) in cases {
         let out = tracery().arg("quilt").args(args).arg("--stl").arg(&stl).output().unwrap();

@@ -167,3 +167,14 @@ fn regenerate_lamp_screenshot() {
     settle_model(&mut harness);
     save(&mut harness, "lamp.png");
 }
+
+#[test]
+#[ignore = "writes screenshots/; run on purpose"]
+fn regenerate_texture_screenshot() {
+    let mut harness = rendered_window();
+    harness.get_by_label("3D model").click();
+    harness.run_steps(2);
+    drive::click_in_side_panel(&mut harness, "Cover the model with texture");
+    settle_model(&mut harness);
+    save(&mut harness, "texture.png");
+}

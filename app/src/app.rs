@@ -62,6 +62,8 @@ pub struct TraceryApp {
     pub(crate) surface_worker: Worker<SurfaceJob>,
     /// Lamp shades on the model's axis.
     pub(crate) shade_worker: Worker<ShadeJob>,
+    /// Texture over the model (one slot, [`model::TEXTURE`]).
+    pub(crate) texture_worker: Worker<model::TextureJob>,
     /// The object made of them and the model (one slot, [`ASSEMBLY`]).
     pub(crate) assembly_worker: Worker<AssemblyJob>,
     /// Autocomplete's and clone's suggested paths (one slot, [`crate::predictions::PREDICTION_ID`]).
@@ -115,6 +117,7 @@ impl TraceryApp {
             live: Worker::live(Arc::new(|| {})),
             surface_worker: Worker::default(),
             shade_worker: Worker::default(),
+            texture_worker: Worker::default(),
             assembly_worker: Worker::default(),
             predictor: Worker::default(),
             predictions: None,
@@ -189,6 +192,7 @@ impl TraceryApp {
     fn model_stale(&self) -> bool {
         self.doc.model.drawn_curves().any(|c| self.surface_worker.is_stale(c.id))
             || self.doc.model.shades.iter().any(|c| self.shade_worker.is_stale(c.id))
+            || (self.doc.model.texture.on && self.texture_worker.is_stale(model::TEXTURE))
             || self.assembly_worker.is_stale(ASSEMBLY)
     }
 
@@ -319,6 +323,7 @@ impl TraceryApp {
             self.surface_worker.set_waker(wake.clone());
             self.assembly_worker.set_waker(wake.clone());
             self.shade_worker.set_waker(wake.clone());
+            self.texture_worker.set_waker(wake.clone());
             self.predictor.set_waker(wake.clone());
             self.live.set_waker(wake);
             self.waker_set = true;
@@ -408,7 +413,7 @@ impl TraceryApp {
             }
         }
         self.shade_worker.retain(&shade_ids);
-        let busy = self.surface_worker.poll(now) | self.shade_worker.poll(now);
+        let busy = self.surface_worker.poll(now) | self.shade_worker.poll(now) | model::submit_texture(self, now);
         self.submit_assembly(now) || busy
     }
 
@@ -437,8 +442,13 @@ impl TraceryApp {
             .drawn_curves()
             .map(|c| Self::finished_part(&self.surface_worker, c.id, part_role(&c.surface)));
         let shades = self.doc.model.shades.iter().map(|c| Self::finished_part(&self.shade_worker, c.id, PartRole::Add));
-        let parts: Option<Vec<_>> =
-            bands.chain(shades).collect::<Option<Vec<_>>>().map(|parts| parts.into_iter().flatten().collect());
+        let texture =
+            self.doc.model.texture.on.then(|| Self::finished_part(&self.texture_worker, model::TEXTURE, PartRole::Add));
+        let parts: Option<Vec<_>> = bands
+            .chain(shades)
+            .chain(texture)
+            .collect::<Option<Vec<_>>>()
+            .map(|parts| parts.into_iter().flatten().collect());
         match (parts, self.caches.model(&self.doc.model, &base)) {
             (Some(parts), Ok(model)) if !parts.is_empty() => {
                 let with_model = self.doc.model.with_model;

@@ -261,7 +261,8 @@ impl TraceryApp {
             // The object on the model is one: every curve and shade is in it.
             Workspace::Model => {
                 let curves = self.doc.model.drawn_curves().map(|c| c.id);
-                curves.chain(self.doc.model.shades.iter().map(|c| c.id)).collect()
+                let texture = self.doc.model.texture.on.then_some(crate::model::TEXTURE);
+                curves.chain(self.doc.model.shades.iter().map(|c| c.id)).chain(texture).collect()
             }
         }
     }
@@ -280,6 +281,9 @@ impl TraceryApp {
                 // Finished: the product, or `None` when the job failed.
                 let (stale, finished) = match self.state.workspace {
                     Workspace::Canvas => (self.worker.is_stale(id), done(self.worker.state(id))),
+                    Workspace::Model if id == crate::model::TEXTURE => {
+                        (self.texture_worker.is_stale(id), done(self.texture_worker.state(id)))
+                    }
                     Workspace::Model if self.doc.model.shade(id).is_some() => {
                         (self.shade_worker.is_stale(id), done(self.shade_worker.state(id)))
                     }

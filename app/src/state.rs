@@ -155,6 +155,8 @@ pub struct Caches {
     /// Models by reference, or why they did not load (kept, so a broken
     /// model is not read again every frame).
     models: HashMap<BaseRef, Result<Arc<LoadedModel>, String>>,
+    /// Built-in swatches, modelled once.
+    swatches: HashMap<String, Arc<tracery_core::mesh_quilt::Swatch>>,
 }
 
 /// The avoided area and its triangles, and the strokes they were made from.
@@ -257,6 +259,20 @@ impl Caches {
                 Ok(Arc::new(LoadedModel { surface: Arc::new(surface), view }))
             })
             .clone()
+    }
+
+    /// The built-in swatch named `name`, modelled once.
+    pub fn swatch(&mut self, name: &str) -> Result<Arc<tracery_core::mesh_quilt::Swatch>, String> {
+        use tracery_core::mesh_quilt::{SWATCH_NAMES, builtin_swatch};
+        if let Some(swatch) = self.swatches.get(name) {
+            return Ok(swatch.clone());
+        }
+        let swatch = Arc::new(
+            builtin_swatch(name)
+                .ok_or_else(|| format!("no built-in swatch '{name}' (built-ins: {})", SWATCH_NAMES.join(", ")))?,
+        );
+        self.swatches.insert(name.to_string(), swatch.clone());
+        Ok(swatch)
     }
 
     /// Forgets a model (it was refused, and its name may be given to another).

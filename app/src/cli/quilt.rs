@@ -8,7 +8,7 @@ use clap::Parser;
 use tracery_core::control::Control;
 use tracery_core::mesh::read_mesh_file;
 use tracery_core::mesh_quilt::{
-    SWATCH_NAMES, Settings, Swatch, builtin_swatch, make_product, make_surface_product, parse_base,
+    SWATCH_NAMES, Settings, Swatch, builtin_swatch, make_product, make_surface_product, parse_base, unite_with_base,
 };
 use tracery_core::surface::SurfaceMesh;
 
@@ -33,6 +33,12 @@ pub struct QuiltArgs {
     /// Which random choices the synthesis makes [default: 1].
     #[arg(long)]
     pub seed: Option<u64>,
+    /// How deep the texture sits in a model, mm, so that it unites with it [default: 0.3].
+    #[arg(long)]
+    pub sink_mm: Option<f64>,
+    /// Write the model and the texture united into one solid, not the texture alone.
+    #[arg(long)]
+    pub with_base: bool,
     #[command(flatten)]
     pub output: OutputArgs,
 }
@@ -44,6 +50,7 @@ impl QuiltArgs {
         s.scale = self.scale.unwrap_or(s.scale);
         s.cells_across = self.cells_across.unwrap_or(s.cells_across);
         s.seed = self.seed.unwrap_or(s.seed);
+        s.sink_mm = self.sink_mm.unwrap_or(s.sink_mm);
         s
     }
 }
@@ -71,10 +78,14 @@ pub fn run(args: QuiltArgs) -> Result<()> {
     settings.validate()?;
     let swatch = load_swatch(&args.swatch)?;
     let product = if args.base.starts_with("plane:") {
+        if args.with_base {
+            bail!("a plane has no model to unite the texture with: leave out --with-base, or quilt a model");
+        }
         make_product(&swatch, parse_base(&args.base)?, &settings, &Control::default())?
     } else {
         let surface = SurfaceMesh::new(super::surface::load_base(&args.base)?)?;
-        make_surface_product(&swatch, &surface, &settings, &Control::default())?
+        let texture = make_surface_product(&swatch, &surface, &settings, &Control::default())?;
+        if args.with_base { unite_with_base(texture, &surface)? } else { texture }
     };
     write_outputs("quilt", &swatch.name, &args.base, &args.output, &product)
 }

@@ -101,6 +101,25 @@ impl Default for ShadeItem {
     }
 }
 
+/// 3D texture grown over the whole model from a mesh swatch (mesh
+/// quilting), with the settings `tracery quilt` uses.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(default)]
+pub struct TextureItem {
+    /// Whether the model is covered; off keeps the choices for later.
+    pub on: bool,
+    /// The built-in swatch, by name (see `tracery list --swatches`).
+    pub swatch: String,
+    /// Scale, seed, sink and the rest.
+    pub settings: tracery_core::mesh_quilt::Settings,
+}
+
+impl Default for TextureItem {
+    fn default() -> Self {
+        TextureItem { on: false, swatch: "rivets".into(), settings: tracery_core::mesh_quilt::Settings::default() }
+    }
+}
+
 /// The model workspace: a model, the curves drawn on it and the shades over it.
 #[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize)]
 #[serde(default)]
@@ -116,6 +135,8 @@ pub struct ModelScene {
     /// Whether the model is part of the exported object even where no
     /// curve is embossed on it (a lamp's foot).
     pub with_model: bool,
+    /// Texture over the whole model.
+    pub texture: TextureItem,
 }
 
 impl ModelScene {

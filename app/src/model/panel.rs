@@ -43,6 +43,8 @@ pub fn model_panel_ui(app: &mut TraceryApp, ui: &mut egui::Ui) {
         app.doc.model.base = base;
     }
     ui.separator();
+    super::texture::texture_ui(app, ui);
+    ui.separator();
     ui.label(RichText::new("Curves on the model").strong());
     let mut clicked = None;
     for item in &app.doc.model.curves {
@@ -150,8 +152,9 @@ fn surface_settings_ui(ui: &mut egui::Ui, item: &mut SurfaceCurveItem) {
 }
 
 /// The status line of the model workspace, about the selected curve (or the last one).
-pub fn model_status_ui(app: &TraceryApp, ui: &mut egui::Ui) {
+pub fn model_status_ui(app: &mut TraceryApp, ui: &mut egui::Ui) {
     part_status_ui(app, ui);
+    super::texture::texture_status_ui(app, ui);
     object_status_ui(app, ui);
 }
 
@@ -196,7 +199,7 @@ fn part_status_ui(app: &TraceryApp, ui: &mut egui::Ui) {
 fn object_status_ui(app: &TraceryApp, ui: &mut egui::Ui) {
     let holds_model = app.doc.model.holds_model();
     let curves = app.doc.model.drawn_curves().count();
-    let parts = curves + app.doc.model.shades.len();
+    let parts = curves + app.doc.model.shades.len() + usize::from(app.doc.model.texture.on);
     if parts < 2 && !holds_model {
         return;
     }
@@ -209,7 +212,8 @@ fn object_status_ui(app: &TraceryApp, ui: &mut egui::Ui) {
             ui.label(format!("Object: {bodies} body(ies), {triangles} triangles — combined in {ms:.0} ms"));
             let curves = app.doc.model.curves.iter().filter_map(|c| app.surface_worker.output(c.id));
             let shades = app.doc.model.shades.iter().filter_map(|c| app.shade_worker.output(c.id));
-            let of_parts: Vec<_> = curves.chain(shades).collect();
+            let texture = app.doc.model.texture.on.then(|| app.texture_worker.output(super::TEXTURE)).flatten();
+            let of_parts: Vec<_> = curves.chain(shades).chain(texture).collect();
             for w in object.warnings.iter().filter(|w| !of_parts.iter().any(|p| p.warnings.contains(w))) {
                 ui.label(RichText::new(format!("Warning: {w}")).color(WARNING));
             }

@@ -79,6 +79,10 @@ fn model_draws(app: &mut TraceryApp, model_view: &std::sync::Arc<crate::view3d::
         let rgba = if app.selected_surface == Some(item.id) { SELECTED_RGBA } else { PATTERN_RGBA };
         draws.push(Draw { mesh, rgba });
     }
+    let texture = app.doc.model.texture.on.then(|| app.texture_worker.output(super::TEXTURE).cloned()).flatten();
+    if let Some(mesh) = texture.and_then(|t| app.caches.view_mesh(&t)) {
+        draws.push(Draw { mesh, rgba: PATTERN_RGBA });
+    }
     draws
 }
 

@@ -10,8 +10,9 @@ pub struct Mesh {
 }
 
 impl Mesh {
-    /// Number of shells: groups of triangles connected through shared edges.
-    pub fn shell_count(&self) -> usize {
+    /// Each triangle's shell (groups of triangles connected through shared
+    /// edges), as the index of one triangle of that shell.
+    fn shell_of_triangles(&self) -> Vec<usize> {
         let n = self.triangles.len();
         let mut sets = crate::disjoint_sets::DisjointSets::new(n);
         let mut by_edge: std::collections::HashMap<(u32, u32), usize> = std::collections::HashMap::new();
@@ -26,7 +27,64 @@ impl Mesh {
                 }
             }
         }
-        (0..n).filter(|&t| sets.find(t) == t).count()
+        (0..n).map(|t| sets.find(t)).collect()
+    }
+
+    /// Number of shells: groups of triangles connected through shared edges.
+    pub fn shell_count(&self) -> usize {
+        self.shell_of_triangles().iter().enumerate().filter(|&(t, &s)| s == t).count()
+    }
+
+    /// Removes the shells enclosing less than `min_volume_mm3` (crumbs no
+    /// printer can make, such as the slivers a boolean leaves where two
+    /// surfaces nearly touch), with the vertices only they used; returns
+    /// how many were removed.
+    ///
+    /// ```
+    /// use tracery_core::mesh::Mesh;
+    /// let tetra = |s: f64, x: f64| Mesh {
+    ///     vertices: vec![[x, 0.0, 0.0], [x + s, 0.0, 0.0], [x, s, 0.0], [x, 0.0, s]],
+    ///     triangles: vec![[0, 2, 1], [0, 1, 3], [1, 2, 3], [0, 3, 2]],
+    /// };
+    /// let mut both = tetra(3.0, 0.0);
+    /// both.append(&tetra(0.01, 10.0));
+    /// assert_eq!(both.remove_crumbs(1e-3), 1);
+    /// assert_eq!((both.shell_count(), both.vertices.len()), (1, 4));
+    /// ```
+    pub fn remove_crumbs(&mut self, min_volume_mm3: f64) -> usize {
+        let shells = self.shell_of_triangles();
+        let mut volume: std::collections::HashMap<usize, f64> = std::collections::HashMap::new();
+        for (t, &shell) in self.triangles.iter().zip(&shells) {
+            let [a, b, c] = t.map(|v| glam::DVec3::from(self.vertices[v as usize]));
+            *volume.entry(shell).or_default() += a.dot(b.cross(c)) / 6.0;
+        }
+        let crumbs = volume.values().filter(|v| v.abs() < min_volume_mm3).count();
+        if crumbs == 0 {
+            return 0;
+        }
+        let keep: Vec<[u32; 3]> = self
+            .triangles
+            .iter()
+            .zip(&shells)
+            .filter(|(_, s)| volume[s].abs() >= min_volume_mm3)
+            .map(|(t, _)| *t)
+            .collect();
+        let mut index = vec![u32::MAX; self.vertices.len()];
+        let mut vertices = Vec::new();
+        let triangles = keep
+            .iter()
+            .map(|t| {
+                t.map(|v| {
+                    if index[v as usize] == u32::MAX {
+                        index[v as usize] = vertices.len() as u32;
+                        vertices.push(self.vertices[v as usize]);
+                    }
+                    index[v as usize]
+                })
+            })
+            .collect();
+        *self = Mesh { vertices, triangles };
+        crumbs
     }
 }
 

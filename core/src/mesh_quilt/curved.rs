@@ -98,7 +98,7 @@ impl Zones for SurfaceZones<'_> {
 }
 
 /// Quilts `surface` with `swatch` (already scaled) in a shell as thick as
-/// the swatch. Faces the model stands on (facing down at its lowest
+/// the swatch, its bottom `settings.sink_mm` inside the model. Faces the model stands on (facing down at its lowest
 /// level) are left bare, so it still stands flat.
 pub fn quilt_surface(
     swatch: &Swatch,
@@ -133,6 +133,8 @@ pub fn quilt_surface(
     let total = processed.len() as f32;
     // The seed sits at the middle of cell (0, 0) of its patch.
     let seed_uv = DVec2::splat(0.5 * cell_mm);
+    // The swatch's height 0 lies this far inside the model (see `Settings::sink_mm`).
+    let sink_mm = settings.sink_mm;
     while let Some(seed) = most_constrained(&graph, &processed) {
         control.check()?;
         let Some(patch) = grow_patch(surface, &graph, seed, radius_mm, seed_uv, &mut report) else {
@@ -145,7 +147,7 @@ pub fn quilt_surface(
             let normal = surface.face_normal(f);
             let u = patch.u_axis(f)?;
             let v = normal.cross(u);
-            Some((shell.point(surface, f, b, p.z), (u * n.x + v * n.y + normal * n.z).normalize_or_zero()))
+            Some((shell.point(surface, f, b, p.z - sink_mm), (u * n.x + v * n.y + normal * n.z).normalize_or_zero()))
         };
         let window: Vec<(i64, i64)> = (-half..=half)
             .flat_map(|dj| (-half..=half).map(move |di| (di, dj)))
@@ -154,7 +156,7 @@ pub fn quilt_surface(
                 patch.locate(centre).is_some_and(|(f, _)| processed[f as usize])
             })
             .collect();
-        let around = neighbourhood(surface, &patch, &quilt.elements, &window, cell_mm);
+        let around = neighbourhood(surface, &patch, &quilt.elements, &window, cell_mm, sink_mm);
         let (_, _, placement) =
             best_translation(&input, &around, (0, 0), settings, reach, to_output, true, &mut random);
         // The swatch's cells it claims, in the swatch's own frame.
@@ -200,7 +202,7 @@ pub fn quilt_surface(
                     .map(|&v| {
                         let q = placement.to_frame(v);
                         let (f, b) = patch.locate(q.truncate())?;
-                        Some(shell.point(surface, f, b, q.z))
+                        Some(shell.point(surface, f, b, q.z - sink_mm))
                     })
                     .collect();
                 Some(Element { vertices: vertices?, triangles: e.triangles.clone() })
@@ -266,12 +268,15 @@ fn grow_patch(
 
 /// The output around the seed in the patch's flat frame: its vertices over
 /// the window's cells, sampled, and its faces near the patch (in space).
+/// Heights are measured from the shell's bottom, `sink_mm` inside the model,
+/// as the swatch's are.
 fn neighbourhood<'a>(
     surface: &SurfaceMesh,
     patch: &Patch,
     output: &[Element],
     window: &'a [(i64, i64)],
     cell_mm: f64,
+    sink_mm: f64,
 ) -> Neighbourhood<'a> {
     let faces: Vec<DVec3> = window
         .iter()
@@ -296,7 +301,7 @@ fn neighbourhood<'a>(
             let normal = surface.face_normal(on.face);
             let Some(u) = patch.u_axis(on.face) else { continue };
             let v = normal.cross(u);
-            let height = (p - on.position_mm).dot(normal);
+            let height = (p - on.position_mm).dot(normal) + sink_mm;
             samples.push((flat.extend(height), DVec3::new(n.dot(u), n.dot(v), n.dot(normal))));
         }
     }

@@ -1,11 +1,15 @@
 //! [`make_product`]: a quilt as the [`Product`] every mode returns, its
 //! elements one mesh of separate closed shells, with its figures.
 
-use super::{Quilt, QuiltError, Settings, Swatch, quilt_plane, quilt_surface};
+use super::{Element, Quilt, QuiltError, Settings, Swatch, quilt_plane, quilt_surface, trim_below};
 use crate::control::Control;
 use crate::mesh::Mesh;
 use crate::product::{Fact, Product};
-use crate::surface::SurfaceMesh;
+use crate::surface::{PartRole, SurfaceMesh, assemble_products};
+
+/// How near the model a piece cut at the floor must come to count as
+/// resting on it when nothing sinks, mm.
+const TOUCH_TOLERANCE_MM: f64 = 0.05;
 
 /// What the quilt covers.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -58,7 +62,8 @@ pub fn make_product(
 /// Quilts the curved `surface` with `swatch` at the settings' scale, in a
 /// shell as thick as the scaled swatch: the texture alone, its elements one
 /// mesh of closed shells, with the shell's stretch before and after tuning
-/// among the facts.
+/// among the facts. Elements reaching below the plane the model stands on
+/// are cut off flat there (the fact `cut_at_floor` counts them).
 pub fn make_surface_product(
     swatch: &Swatch,
     surface: &SurfaceMesh,
@@ -68,8 +73,22 @@ pub fn make_surface_product(
     settings.validate()?;
     let mut product = Product::default();
     let swatch = swatch.scaled(settings.scale);
-    let quilt = product.timings.time("quilt", || quilt_surface(&swatch, surface, settings, control))?;
+    let mut quilt = product.timings.time("quilt", || quilt_surface(&swatch, surface, settings, control))?;
+    let floor_z_mm = surface.positions().iter().map(|p| p.z).fold(f64::INFINITY, f64::min);
+    // A piece left by the cut is kept where it still rests on the model:
+    // sunk into it at least half the sink (a piece only grazing the foot's
+    // edge would print loose), or touching it when nothing sinks.
+    let rests = |piece: &Element| {
+        let depth_mm = 0.5 * settings.sink_mm - TOUCH_TOLERANCE_MM;
+        piece.vertices.iter().any(|&p| {
+            let on = surface.closest_point(p.to_array());
+            (on.position_mm - p).dot(surface.normal(on.face, on.barycentric)) >= depth_mm
+        })
+    };
+    let trimmed = product.timings.time("floor", || trim_below(&mut quilt.elements, floor_z_mm, rests))?;
     describe(&mut product, &quilt, &swatch);
+    product.facts.push("cut_at_floor", Fact::Count(trimmed.cut));
+    product.facts.push("removed_at_floor", Fact::Count(trimmed.removed + trimmed.crumbs));
     if let Some(shell) = quilt.shell {
         let facts = &mut product.facts;
         facts.push("shell_l2_stretch_normals", Fact::Number(shell.before.l2));
@@ -79,6 +98,24 @@ pub fn make_surface_product(
         facts.push("max_patch_area_distortion", Fact::Number(shell.max_patch_distortion));
         facts.push("bare_seeds", Fact::Count(shell.bare_seeds));
     }
+    Ok(product)
+}
+
+/// The texture of [`make_surface_product`] united with the model it was
+/// made on into one solid: the model's shape with the texture standing out
+/// of it, as one body where every element rests on the model (they sink
+/// into it by [`Settings::sink_mm`]). The fact `shells` counts the bodies;
+/// the texture's facts are kept.
+pub fn unite_with_base(texture: Product, surface: &SurfaceMesh) -> Result<Product, QuiltError> {
+    let object = assemble_products(Some(surface), true, &[(&texture, PartRole::Add)])?;
+    let mut product = texture;
+    product.timings = object.timings;
+    product.warnings = object.warnings;
+    product.mesh_mm = object.mesh_mm;
+    product.facts.push("crumbs_removed", Fact::Count(object.facts.count("crumbs_removed").unwrap_or(0)));
+    let shells = product.mesh_mm.as_ref().map_or(0, |m| m.shell_count());
+    product.topology.components = shells;
+    product.facts.push("shells", Fact::Count(shells));
     Ok(product)
 }
 

@@ -35,17 +35,26 @@ pub struct Settings {
     pub tolerance: f64,
     /// Which random choices the synthesis makes: another seed, another quilt.
     pub seed: u64,
+    /// How deep the texture sits in a curved base, mm: the shell's bottom
+    /// lies this far inside the model, so that elements resting on it
+    /// overlap it and unite with it into one solid, rather than touching
+    /// it along a face (which prints as two bodies, or not at all).
+    pub sink_mm: f64,
 }
 
 impl Default for Settings {
     fn default() -> Self {
-        Settings { scale: 1.0, cells_across: 12, lambda: 1.0, mu: 1.0, tolerance: 0.1, seed: 1 }
+        Settings { scale: 1.0, cells_across: 12, lambda: 1.0, mu: 1.0, tolerance: 0.1, seed: 1, sink_mm: 0.3 }
     }
 }
 
 /// The fewest grid cells across a swatch: fewer leaves no room for an
 /// overlap between patches.
 pub const MIN_CELLS_ACROSS: usize = 6;
+
+/// The deepest the texture may sit in a model, mm: deeper hides the
+/// elements' feet and can reach through a thin wall.
+pub const MAX_SINK_MM: f64 = 3.0;
 
 /// The most grid cells across a swatch.
 pub const MAX_CELLS_ACROSS: usize = 64;
@@ -64,6 +73,9 @@ impl Settings {
         positive("mu", self.mu, "")?;
         if !(self.tolerance.is_finite() && (0.0..=1.0).contains(&self.tolerance)) {
             return Err(InvalidSetting(format!("the tolerance must be 0 to 1, not {}", self.tolerance)));
+        }
+        if !(self.sink_mm.is_finite() && (0.0..=MAX_SINK_MM).contains(&self.sink_mm)) {
+            return Err(InvalidSetting(format!("the sink must be 0 to {MAX_SINK_MM} mm, not {}", self.sink_mm)));
         }
         Ok(())
     }

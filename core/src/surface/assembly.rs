@@ -46,6 +46,8 @@ pub struct Assembly {
     pub bodies: usize,
     /// The shell the carved parts were cut from, when any was, mm.
     pub wall_mm: Option<f64>,
+    /// Slivers the booleans left, removed (see [`CRUMB_MM3`]).
+    pub crumbs: usize,
     /// What the person should know.
     pub warnings: Vec<Warning>,
 }
@@ -67,6 +69,11 @@ pub enum AssemblyError {
     #[error(transparent)]
     Boolean(#[from] BooleanError),
 }
+
+/// Bodies smaller than this after the booleans are slivers they left
+/// where two surfaces nearly touch (a thread grazing the model), not part
+/// of the object, mm³: far below anything a printer makes.
+pub const CRUMB_MM3: f64 = 0.01;
 
 /// Combines `parts` made on `model` into one object.
 ///
@@ -129,12 +136,13 @@ pub fn assemble(
             (Some(o), _) => timings.time("unite", || union_solids(&o, part.solid_mm))?,
         });
     }
-    let mesh_mm = object.ok_or(AssemblyError::Empty)?;
+    let mut mesh_mm = object.ok_or(AssemblyError::Empty)?;
+    let crumbs = mesh_mm.remove_crumbs(CRUMB_MM3);
     let bodies = mesh_mm.shell_count();
     if wall_mm.is_some() && bodies > 1 {
         warnings.push(Warning::CarvedApart { bodies });
     }
-    Ok(Assembly { mesh_mm, bodies, wall_mm, warnings })
+    Ok(Assembly { mesh_mm, bodies, wall_mm, crumbs, warnings })
 }
 
 /// Room left between the flat patterns of several parts laid one above
@@ -148,7 +156,8 @@ const FLAT_SPACING_MM: f64 = 5.0;
 /// Its `mesh_mm` is the object; its `region_mm` the parts' flat patterns
 /// laid one above the other, the first at the bottom, and its topology
 /// theirs, summed. Warnings are gathered once each, timings summed, and the
-/// facts give the number of `parts` and the object's `shells`.
+/// facts give the number of `parts`, the object's `shells` and the
+/// `crumbs_removed`.
 pub fn assemble_products(
     model: Option<&SurfaceMesh>,
     with_model: bool,
@@ -179,6 +188,7 @@ pub fn assemble_products(
     product.fill_mm = fill_triangles(&product.region_mm);
     product.facts.push("parts", Fact::Count(parts.len()));
     product.facts.push("shells", Fact::Count(object.bodies));
+    product.facts.push("crumbs_removed", Fact::Count(object.crumbs));
     product.mesh_mm = Some(object.mesh_mm);
     Ok(product)
 }

@@ -25,7 +25,7 @@ mod sheet;
 mod surface_mesh;
 mod trace;
 
-pub use assembly::{Assembly, AssemblyError, Part, PartRole, assemble, assemble_products};
+pub use assembly::{Assembly, AssemblyError, CRUMB_MM3, Part, PartRole, assemble, assemble_products};
 pub use band::{BandOnSurface, Sheet, lay_band};
 pub use bases::{BASE_NAMES, builtin_base};
 pub use chart::{Chart, ChartError, MIN_POINTS};
