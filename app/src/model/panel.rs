@@ -221,7 +221,8 @@ fn object_status_ui(app: &TraceryApp, ui: &mut egui::Ui) {
         (None, Some(JobState::Done(Err(e)))) if !app.assembly_worker.is_stale(ASSEMBLY) => {
             ui.label(RichText::new(format!("Object: {e}")).color(ERROR));
         }
-        _ if parts > 0 => {
+        // Parts still being made show their own progress; the object waits for them.
+        _ if parts > 0 && app.assembly_worker.is_stale(ASSEMBLY) => {
             ui.spinner();
             ui.label("Combining the curves with the model…");
         }

@@ -76,7 +76,8 @@ pub fn texture_ui(app: &mut TraceryApp, ui: &mut egui::Ui) {
         .on_hover_text("3D detail grown over the whole model from a small swatch (mesh quilting)")
         .changed()
         && item.on;
-    ui.add_enabled_ui(item.on, |ui| {
+    // Editable while off too: choose first, then turn it on.
+    {
         ui.horizontal(|ui| {
             let label = ui.label("Swatch");
             let combo = egui::ComboBox::from_id_salt("swatch").selected_text(item.swatch.clone()).show_ui(ui, |ui| {
@@ -97,7 +98,7 @@ pub fn texture_ui(app: &mut TraceryApp, ui: &mut egui::Ui) {
                 .labelled_by(label.id)
                 .on_hover_text("Another seed, another texture");
         });
-    });
+    }
     if turned_on {
         // United with the model, the texture prints as one body with it.
         app.doc.model.with_model = true;
