@@ -11,7 +11,9 @@
 //! test then work where the print will be, and a thread that runs across
 //! many patches never has to be laid flat whole again.
 
-use std::collections::HashMap;
+use std::sync::Mutex;
+
+use rustc_hash::FxHashMap;
 
 use glam::{DVec2, DVec3};
 
@@ -24,7 +26,7 @@ use super::zones::{Zone, Zones, boxes_overlap};
 use super::{Element, MAX_QUILT_TRIANGLES, Quilt, QuiltError, Settings, Swatch};
 use crate::control::Control;
 use crate::random::SplitMix64;
-use crate::surface::SurfaceMesh;
+use crate::surface::{SurfaceMesh, SurfacePoint};
 
 /// Tries at growing a patch, each smaller than the last, before a seed is
 /// given up and left bare.
@@ -61,13 +63,38 @@ pub(super) fn around_axis(surface: &SurfaceMesh, f: u32) -> DVec3 {
     tangent.try_normalize().unwrap_or_else(|| normal.any_orthonormal_vector())
 }
 
+/// Each asked point's closest point of the base, by the point's bits.
+/// Merging asks both the zone and the nearness of the same vertices and
+/// face centres several times over, and neighbourhoods ask again for the
+/// same elements patch after patch; the query is the costliest part of
+/// quilting a model. Elements only move where they are merged, and a moved
+/// vertex is a new key.
+struct Closest<'a> {
+    surface: &'a SurfaceMesh,
+    known: Mutex<FxHashMap<[u64; 3], SurfacePoint>>,
+}
+
+impl<'a> Closest<'a> {
+    fn new(surface: &'a SurfaceMesh) -> Self {
+        Closest { surface, known: Mutex::new(FxHashMap::default()) }
+    }
+
+    /// The base's closest point to `p`, remembered.
+    fn point(&self, p: DVec3) -> SurfacePoint {
+        let key = p.to_array().map(f64::to_bits);
+        // A poisoned lock only means a panic elsewhere; the map is still sound.
+        let mut known = self.known.lock().unwrap_or_else(|e| e.into_inner());
+        *known.entry(key).or_insert_with(|| self.surface.closest_point(p.to_array()))
+    }
+}
+
 /// The layout of the base for one patch: which faces are done, which the
 /// patch claims, and how far each nearby face is from what it claims.
 struct SurfaceZones<'a> {
-    surface: &'a SurfaceMesh,
+    closest: &'a Closest<'a>,
     processed: &'a [bool],
     footprint: Vec<bool>,
-    near: HashMap<u32, f64>,
+    near: FxHashMap<u32, f64>,
     cell_mm: f64,
     near_box: (DVec3, DVec3),
 }
@@ -78,7 +105,7 @@ impl Zones for SurfaceZones<'_> {
     }
 
     fn zone(&self, p: DVec3) -> Zone {
-        let f = self.surface.closest_point(p.to_array()).face as usize;
+        let f = self.closest.point(p).face as usize;
         match (self.processed[f], self.footprint[f]) {
             (true, true) => Zone::Overlap,
             (true, false) => Zone::Old,
@@ -88,7 +115,7 @@ impl Zones for SurfaceZones<'_> {
     }
 
     fn near_footprint(&self, p: DVec3, cells: f64) -> bool {
-        let f = self.surface.closest_point(p.to_array()).face;
+        let f = self.closest.point(p).face;
         self.near.get(&f).is_some_and(|&d| d <= cells * self.cell_mm)
     }
 
@@ -131,6 +158,7 @@ pub fn quilt_surface(
     let mut random = SplitMix64::new(settings.seed);
     let mut quilt = Quilt::default();
     let total = processed.len() as f32;
+    let closest = Closest::new(surface);
     // The seed sits at the middle of cell (0, 0) of its patch.
     let seed_uv = DVec2::splat(0.5 * cell_mm);
     // The swatch's height 0 lies this far inside the model (see `Settings::sink_mm`).
@@ -156,7 +184,7 @@ pub fn quilt_surface(
                 patch.locate(centre).is_some_and(|(f, _)| processed[f as usize])
             })
             .collect();
-        let around = neighbourhood(surface, &patch, &quilt.elements, &window, cell_mm, sink_mm);
+        let around = neighbourhood(&closest, &patch, &quilt.elements, &window, cell_mm, sink_mm);
         let (_, _, placement) =
             best_translation(&input, &around, (0, 0), settings, reach, to_output, true, &mut random);
         // The swatch's cells it claims, in the swatch's own frame.
@@ -177,7 +205,7 @@ pub fn quilt_surface(
         for &f in &claimed_faces {
             footprint[f as usize] = true;
         }
-        let near: HashMap<u32, f64> =
+        let near: FxHashMap<u32, f64> =
             graph.within(&claimed_faces, (NEAR_CELLS + reach / cell_mm) * cell_mm).into_iter().collect();
         let near_box = claimed_faces.iter().fold((DVec3::INFINITY, DVec3::NEG_INFINITY), |(lo, hi), &f| {
             let p = graph.centres[f as usize];
@@ -185,7 +213,7 @@ pub fn quilt_surface(
         });
         let grow = DVec3::splat(size.z + cell_mm);
         let zones = SurfaceZones {
-            surface,
+            closest: &closest,
             processed: &processed,
             footprint,
             near,
@@ -271,13 +299,14 @@ fn grow_patch(
 /// Heights are measured from the shell's bottom, `sink_mm` inside the model,
 /// as the swatch's are.
 fn neighbourhood<'a>(
-    surface: &SurfaceMesh,
+    closest: &Closest<'_>,
     patch: &Patch,
     output: &[Element],
     window: &'a [(i64, i64)],
     cell_mm: f64,
     sink_mm: f64,
 ) -> Neighbourhood<'a> {
+    let surface = closest.surface;
     let faces: Vec<DVec3> = window
         .iter()
         .filter_map(|&(i, j)| {
@@ -292,7 +321,7 @@ fn neighbourhood<'a>(
     let mut samples: Vec<(DVec3, DVec3)> = Vec::new();
     for e in &near {
         for (&p, n) in e.vertices.iter().zip(e.vertex_normals()) {
-            let on = surface.closest_point(p.to_array());
+            let on = closest.point(p);
             let Some(flat) = patch.to_flat(on.face, on.barycentric) else { continue };
             let cell = ((flat.x / cell_mm).floor() as i64, (flat.y / cell_mm).floor() as i64);
             if !window.contains(&cell) {
