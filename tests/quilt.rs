@@ -71,7 +71,9 @@ fn bad_input_fails_with_one_line_and_no_file() {
     let open = dir.join("open.obj");
     std::fs::write(&open, "v 0 0 0\nv 4 0 0\nv 0 4 0\nv 0 0 1\nf 1 3 2\nf 1 2 4\nf 2 3 4\n").unwrap();
     let stl = dir.join("out.stl");
-    let cases: [(&[&str], &str); 8] = [
+    let bad_field = dir.join("field.txt");
+    std::fs::write(&bad_field, "# one stroke, one point short\n30,0,5; 30,0\n").unwrap();
+    let cases: [(&[&str], &str); 11] = [
         (&["--swatch", "lace", "--base", "plane:40x40"], "no mesh file or built-in swatch"),
         (&["--swatch", "weave", "--base", "plane:40"], "not a base"),
         (&["--swatch", "weave", "--base", "plane:40x40", "--scale", "0"], "scale"),
@@ -80,6 +82,9 @@ fn bad_input_fails_with_one_line_and_no_file() {
         (&["--swatch", "weave", "--base", "plane:100000x100000"], "at most"),
         (&["--swatch", "weave", "--base", "plane:40x40", "--with-base"], "no model to unite"),
         (&["--swatch", "weave", "--base", "vase", "--sink-mm", "5"], "sink"),
+        (&["--swatch", "weave", "--base", "plane:40x40", "--field", &path(&bad_field)], "for models"),
+        (&["--swatch", "weave", "--base", "vase", "--field", &path(&dir.join("none.txt"))], "could not read"),
+        (&["--swatch", "weave", "--base", "vase", "--field", &path(&bad_field)], "line 2"),
     ];
     for (args, expected) in cases {
         let out = tracery().arg("quilt").args(args).arg("--stl").arg(&stl).output().unwrap();

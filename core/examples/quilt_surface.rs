@@ -6,7 +6,7 @@ use std::time::Instant;
 use tracery_core::control::Control;
 use tracery_core::export::write_stl;
 use tracery_core::mesh::Mesh;
-use tracery_core::mesh_quilt::{Settings, builtin_swatch, quilt_surface};
+use tracery_core::mesh_quilt::{GuidanceField, Settings, builtin_swatch, quilt_surface};
 use tracery_core::surface::{SurfaceMesh, builtin_base};
 
 fn main() {
@@ -17,7 +17,14 @@ fn main() {
     let surface = SurfaceMesh::new(builtin_base(base).expect("a built-in base")).expect("a sound base");
     let swatch = builtin_swatch(swatch).expect("a built-in swatch").scaled(scale);
     let start = Instant::now();
-    let quilt = quilt_surface(&swatch, &surface, &Settings::default(), &Control::default()).expect("a quilt");
+    let quilt = quilt_surface(
+        &swatch,
+        &surface,
+        &GuidanceField::around_axis(&surface),
+        &Settings::default(),
+        &Control::default(),
+    )
+    .expect("a quilt");
     let mut mesh = Mesh::default();
     for e in &quilt.elements {
         mesh.append(&e.to_mesh());

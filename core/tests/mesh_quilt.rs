@@ -9,7 +9,8 @@ use glam::DVec3;
 use tracery_core::control::Control;
 use tracery_core::mesh::Mesh;
 use tracery_core::mesh_quilt::{
-    Element, FORCED, QuiltError, Settings, Shell, Swatch, builtin_swatch, min_cut_keep, quilt_plane, quilt_surface,
+    Element, FORCED, GuidanceField, QuiltError, Settings, Shell, Swatch, builtin_swatch, min_cut_keep, quilt_plane,
+    quilt_surface,
 };
 use tracery_core::surface::SurfaceMesh;
 
@@ -304,7 +305,9 @@ fn a_grooved_post_is_covered_by_whole_rivets_that_never_cross() {
     let height = swatch.size_mm().z;
     // Offset along the normals, the shell folds in the groove.
     assert!(Shell::along_normals(&post, height).stretch(&post).inverted > 0);
-    let quilt = quilt_surface(&swatch, &post, &Settings::default(), &Control::default()).unwrap();
+    let quilt =
+        quilt_surface(&swatch, &post, &GuidanceField::around_axis(&post), &Settings::default(), &Control::default())
+            .unwrap();
     let sink_mm = Settings::default().sink_mm;
     let shell = quilt.shell.unwrap();
     assert_eq!(shell.after.inverted, 0, "{shell:?}");
@@ -336,4 +339,58 @@ fn a_grooved_post_is_covered_by_whole_rivets_that_never_cross() {
         "{folded} of {} elements pass through themselves",
         quilt.elements.len()
     );
+}
+
+/// The median, over scales on the cylinder's side, of each scale's height
+/// over its width around the cylinder: above 1 when their long axis
+/// stands up, below when it lies around.
+fn scale_upright(elements: &[Element]) -> f64 {
+    let mut ratios: Vec<f64> = elements
+        .iter()
+        .filter_map(|e| {
+            let centre = e.vertices.iter().sum::<DVec3>() / e.vertices.len() as f64;
+            if centre.truncate().length() < 20.0 || !(12.0..48.0).contains(&centre.z) {
+                return None;
+            }
+            let around = DVec3::Z.cross(centre.with_z(0.0)).normalize();
+            let extent = |axis: DVec3| {
+                let (lo, hi) = e
+                    .vertices
+                    .iter()
+                    .map(|v| v.dot(axis))
+                    .fold((f64::MAX, f64::MIN), |(lo, hi), d| (lo.min(d), hi.max(d)));
+                hi - lo
+            };
+            Some(extent(DVec3::Z) / extent(around))
+        })
+        .collect();
+    assert!(ratios.len() >= 20, "only {} scales on the side", ratios.len());
+    ratios.sort_by(f64::total_cmp);
+    ratios[ratios.len() / 2]
+}
+
+#[test]
+fn strokes_drawn_up_the_cylinder_turn_the_scales() {
+    let cylinder = SurfaceMesh::new(tracery_core::surface::builtin_base("cylinder").unwrap()).unwrap();
+    // The swatch's scales are longer along its v axis than along u.
+    let swatch = builtin_swatch("scales").unwrap();
+    let settings = Settings::default();
+    let around = GuidanceField::around_axis(&cylinder);
+    let quilt = quilt_surface(&swatch, &cylinder, &around, &settings, &Control::default()).unwrap();
+    let standing = scale_upright(&quilt.elements);
+    // Eight strokes drawn from the foot to the top.
+    let up: Vec<Vec<[f64; 3]>> = (0..8)
+        .map(|k| {
+            let a = k as f64 / 8.0 * std::f64::consts::TAU;
+            vec![[25.0 * a.cos(), 25.0 * a.sin(), 2.0], [25.0 * a.cos(), 25.0 * a.sin(), 58.0]]
+        })
+        .collect();
+    let up = GuidanceField::from_strokes(&cylinder, &up).unwrap();
+    let quilt = quilt_surface(&swatch, &cylinder, &up, &settings, &Control::default()).unwrap();
+    let lying = scale_upright(&quilt.elements);
+    assert!(standing > 1.05 && lying < 0.95, "height over width: {standing:.2} around the axis, {lying:.2} drawn up");
+    // A field made for another model is refused in words.
+    let vase = SurfaceMesh::new(tracery_core::surface::builtin_base("vase").unwrap()).unwrap();
+    let err = quilt_surface(&swatch, &vase, &up, &settings, &Control::default()).err().unwrap();
+    assert!(err.to_string().contains("made for a model"), "{err}");
 }

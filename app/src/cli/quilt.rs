@@ -3,12 +3,13 @@
 
 use std::path::Path;
 
-use anyhow::{Result, bail};
+use anyhow::{Context, Result, bail};
 use clap::Parser;
 use tracery_core::control::Control;
 use tracery_core::mesh::read_mesh_file;
 use tracery_core::mesh_quilt::{
-    SWATCH_NAMES, Settings, Swatch, builtin_swatch, make_product, make_surface_product, parse_base, unite_with_base,
+    GuidanceField, SWATCH_NAMES, Settings, Swatch, builtin_swatch, make_product, make_surface_product, parse_base,
+    parse_strokes, unite_with_base,
 };
 use tracery_core::surface::SurfaceMesh;
 
@@ -36,6 +37,9 @@ pub struct QuiltArgs {
     /// How deep the texture sits in a model, mm, so that it unites with it [default: 0.3].
     #[arg(long)]
     pub sink_mm: Option<f64>,
+    /// Strokes the swatch's direction follows on a model: a text file, one stroke per line as "x,y,z;x,y,z;..." (mm) [default: around the z axis].
+    #[arg(long)]
+    pub field: Option<std::path::PathBuf>,
     /// Write the model and the texture united into one solid, not the texture alone.
     #[arg(long)]
     pub with_base: bool,
@@ -81,10 +85,21 @@ pub fn run(args: QuiltArgs) -> Result<()> {
         if args.with_base {
             bail!("a plane has no model to unite the texture with: leave out --with-base, or quilt a model");
         }
+        if args.field.is_some() {
+            bail!("a plane's texture follows the plane's axes: --field is for models");
+        }
         make_product(&swatch, parse_base(&args.base)?, &settings, &Control::default())?
     } else {
         let surface = SurfaceMesh::new(super::surface::load_base(&args.base)?)?;
-        let texture = make_surface_product(&swatch, &surface, &settings, &Control::default())?;
+        let field = match &args.field {
+            Some(path) => {
+                let text = std::fs::read_to_string(path)
+                    .with_context(|| format!("could not read the field file {}", path.display()))?;
+                GuidanceField::from_strokes(&surface, &parse_strokes(&text)?)?
+            }
+            None => GuidanceField::around_axis(&surface),
+        };
+        let texture = make_surface_product(&swatch, &surface, &field, &settings, &Control::default())?;
         if args.with_base { unite_with_base(texture, &surface)? } else { texture }
     };
     write_outputs("quilt", &swatch.name, &args.base, &args.output, &product)

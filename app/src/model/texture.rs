@@ -7,7 +7,9 @@ use std::sync::Arc;
 use egui::RichText;
 use tracery_core::Product;
 use tracery_core::control::Control;
-use tracery_core::mesh_quilt::{MAX_SINK_MM, QuiltError, SWATCH_NAMES, Settings, Swatch, make_surface_product};
+use tracery_core::mesh_quilt::{
+    GuidanceField, MAX_SINK_MM, QuiltError, SWATCH_NAMES, Settings, Swatch, make_surface_product,
+};
 use tracery_core::surface::SurfaceMesh;
 
 use crate::TraceryApp;
@@ -44,7 +46,9 @@ impl Job for TextureJob {
     type Error = QuiltError;
 
     fn run(&self, control: &Control) -> Result<Product, QuiltError> {
-        make_surface_product(&self.swatch, &self.surface, &self.settings, control)
+        // Around the model's axis; cheap next to the quilting.
+        let field = GuidanceField::around_axis(&self.surface);
+        make_surface_product(&self.swatch, &self.surface, &field, &self.settings, control)
     }
 }
 

@@ -23,7 +23,7 @@ use super::merge::merge_patch;
 use super::patch::{FaceGraph, Patch, triangle_area_3d};
 use super::shell::{Shell, ShellStretch};
 use super::zones::{Zone, Zones, boxes_overlap};
-use super::{Element, MAX_QUILT_TRIANGLES, Quilt, QuiltError, Settings, Swatch};
+use super::{Element, GuidanceField, MAX_QUILT_TRIANGLES, Quilt, QuiltError, Settings, Swatch};
 use crate::control::Control;
 use crate::random::SplitMix64;
 use crate::surface::{SurfaceMesh, SurfacePoint};
@@ -50,17 +50,6 @@ pub struct ShellReport {
     pub max_patch_distortion: f64,
     /// Seeds whose patch could not be laid flat at any size: left bare.
     pub bare_seeds: usize,
-}
-
-/// The guidance field's direction over face `f`: around the `z` axis (the
-/// axis a lathe-turned vase or cup stands on), in the face's plane; any
-/// tangent where that vanishes (on the axis).
-pub(super) fn around_axis(surface: &SurfaceMesh, f: u32) -> DVec3 {
-    let normal = surface.face_normal(f);
-    let centre = surface.point(f, [1.0 / 3.0; 3]);
-    let around = DVec3::Z.cross(centre);
-    let tangent = around - normal * around.dot(normal);
-    tangent.try_normalize().unwrap_or_else(|| normal.any_orthonormal_vector())
 }
 
 /// Each asked point's closest point of the base, by the point's bits.
@@ -125,15 +114,24 @@ impl Zones for SurfaceZones<'_> {
 }
 
 /// Quilts `surface` with `swatch` (already scaled) in a shell as thick as
-/// the swatch, its bottom `settings.sink_mm` inside the model. Faces the model stands on (facing down at its lowest
+/// the swatch, its bottom `settings.sink_mm` inside the model, the
+/// swatch's `u` axis turned along `field` at each patch's seed. Faces the model stands on (facing down at its lowest
 /// level) are left bare, so it still stands flat.
 pub fn quilt_surface(
     swatch: &Swatch,
     surface: &SurfaceMesh,
+    field: &GuidanceField,
     settings: &Settings,
     control: &Control,
 ) -> Result<Quilt, QuiltError> {
     settings.validate()?;
+    if field.len() != surface.triangles().len() {
+        return Err(QuiltError::BadField(format!(
+            "it was made for a model of {} faces, not this one of {}",
+            field.len(),
+            surface.triangles().len()
+        )));
+    }
     let size = swatch.size_mm();
     let triangles = surface.triangles();
     let area_mm2: f64 = triangles.iter().map(|t| triangle_area_3d(t.map(|v| surface.positions()[v as usize]))).sum();
@@ -165,7 +163,8 @@ pub fn quilt_surface(
     let sink_mm = settings.sink_mm;
     while let Some(seed) = most_constrained(&graph, &processed) {
         control.check()?;
-        let Some(patch) = grow_patch(surface, &graph, seed, radius_mm, seed_uv, &mut report) else {
+        let Some(patch) = grow_patch(surface, &graph, seed, field.direction(seed), radius_mm, seed_uv, &mut report)
+        else {
             processed[seed as usize] = true;
             report.bare_seeds += 1;
             continue;
@@ -278,6 +277,7 @@ fn grow_patch(
     surface: &SurfaceMesh,
     graph: &FaceGraph,
     seed: u32,
+    direction: DVec3,
     radius_mm: f64,
     seed_uv: DVec2,
     report: &mut ShellReport,
@@ -285,7 +285,7 @@ fn grow_patch(
     let mut radius = radius_mm;
     for _ in 0..PATCH_TRIES {
         let faces: Vec<u32> = graph.within(&[seed], radius).into_iter().map(|(f, _)| f).collect();
-        if let Ok(patch) = Patch::lay_flat(surface, faces, seed, around_axis(surface, seed), seed_uv) {
+        if let Ok(patch) = Patch::lay_flat(surface, faces, seed, direction, seed_uv) {
             report.max_patch_distortion = report.max_patch_distortion.max(patch.distortion);
             return Some(patch);
         }

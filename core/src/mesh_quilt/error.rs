@@ -67,6 +67,9 @@ pub enum QuiltError {
     /// The base spec is not one this program knows.
     #[error("'{0}' is not a base: use plane:WIDTHxHEIGHT (mm), a built-in base's name, or an STL or OBJ file")]
     BadBase(String),
+    /// The guidance field cannot be used.
+    #[error("the guidance field is not usable: {0}")]
+    BadField(String),
     /// The texture could not be cut at the floor.
     #[error("the texture could not be cut flat where the model stands: {0}")]
     Floor(#[from] crate::mesh::BooleanError),

@@ -1,7 +1,7 @@
 //! [`make_product`]: a quilt as the [`Product`] every mode returns, its
 //! elements one mesh of separate closed shells, with its figures.
 
-use super::{Element, Quilt, QuiltError, Settings, Swatch, quilt_plane, quilt_surface, trim_below};
+use super::{Element, GuidanceField, Quilt, QuiltError, Settings, Swatch, quilt_plane, quilt_surface, trim_below};
 use crate::control::Control;
 use crate::mesh::Mesh;
 use crate::product::{Fact, Product};
@@ -59,21 +59,23 @@ pub fn make_product(
     Ok(product)
 }
 
-/// Quilts the curved `surface` with `swatch` at the settings' scale, in a
-/// shell as thick as the scaled swatch: the texture alone, its elements one
+/// Quilts the curved `surface` with `swatch` at the settings' scale, along
+/// `field` ([`GuidanceField::around_axis`] for a vase), in a shell as thick
+/// as the scaled swatch: the texture alone, its elements one
 /// mesh of closed shells, with the shell's stretch before and after tuning
 /// among the facts. Elements reaching below the plane the model stands on
 /// are cut off flat there (the fact `cut_at_floor` counts them).
 pub fn make_surface_product(
     swatch: &Swatch,
     surface: &SurfaceMesh,
+    field: &GuidanceField,
     settings: &Settings,
     control: &Control,
 ) -> Result<Product, QuiltError> {
     settings.validate()?;
     let mut product = Product::default();
     let swatch = swatch.scaled(settings.scale);
-    let mut quilt = product.timings.time("quilt", || quilt_surface(&swatch, surface, settings, control))?;
+    let mut quilt = product.timings.time("quilt", || quilt_surface(&swatch, surface, field, settings, control))?;
     let floor_z_mm = surface.positions().iter().map(|p| p.z).fold(f64::INFINITY, f64::min);
     // A piece left by the cut is kept where it still rests on the model:
     // sunk into it at least half the sink (a piece only grazing the foot's
