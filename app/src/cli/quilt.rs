@@ -8,12 +8,21 @@ use clap::Parser;
 use tracery_core::control::Control;
 use tracery_core::mesh::read_mesh_file;
 use tracery_core::mesh_quilt::{
-    GuidanceField, SWATCH_NAMES, Settings, Swatch, builtin_swatch, make_product, make_surface_product, parse_base,
-    parse_strokes, unite_with_base,
+    Direction, GuidanceField, SWATCH_NAMES, Settings, Swatch, builtin_swatch, make_product, make_surface_product,
+    parse_base, parse_strokes, unite_with_base,
 };
 use tracery_core::surface::SurfaceMesh;
 
 use super::output::{OutputArgs, write_outputs};
+
+/// `--direction`'s values.
+#[derive(clap::ValueEnum, Debug, Clone, Copy, PartialEq, Eq)]
+pub enum DirectionArg {
+    /// Around the model's z axis, as rings round a vase.
+    Around,
+    /// Up the model, from its foot towards its top.
+    Up,
+}
 
 /// Flags of `tracery quilt`.
 #[derive(Parser, Debug, Clone, PartialEq)]
@@ -37,6 +46,9 @@ pub struct QuiltArgs {
     /// How deep the texture sits in a model, mm, so that it unites with it [default: 0.3].
     #[arg(long)]
     pub sink_mm: Option<f64>,
+    /// Which way the swatch runs over a model, unless --field is given [default: around].
+    #[arg(long, value_enum)]
+    pub direction: Option<DirectionArg>,
     /// Strokes the swatch's direction follows on a model: a text file, one stroke per line as "x,y,z;x,y,z;..." (mm) [default: around the z axis].
     #[arg(long)]
     pub field: Option<std::path::PathBuf>,
@@ -55,6 +67,11 @@ impl QuiltArgs {
         s.cells_across = self.cells_across.unwrap_or(s.cells_across);
         s.seed = self.seed.unwrap_or(s.seed);
         s.sink_mm = self.sink_mm.unwrap_or(s.sink_mm);
+        s.direction = match self.direction {
+            Some(DirectionArg::Around) => Direction::AroundAxis,
+            Some(DirectionArg::Up) => Direction::AlongAxis,
+            None => s.direction,
+        };
         s
     }
 }
@@ -85,8 +102,8 @@ pub fn run(args: QuiltArgs) -> Result<()> {
         if args.with_base {
             bail!("a plane has no model to unite the texture with: leave out --with-base, or quilt a model");
         }
-        if args.field.is_some() {
-            bail!("a plane's texture follows the plane's axes: --field is for models");
+        if args.field.is_some() || args.direction.is_some() {
+            bail!("a plane's texture follows the plane's axes: --field and --direction are for models");
         }
         make_product(&swatch, parse_base(&args.base)?, &settings, &Control::default())?
     } else {
@@ -97,7 +114,7 @@ pub fn run(args: QuiltArgs) -> Result<()> {
                     .with_context(|| format!("could not read the field file {}", path.display()))?;
                 GuidanceField::from_strokes(&surface, &parse_strokes(&text)?)?
             }
-            None => GuidanceField::around_axis(&surface),
+            None => GuidanceField::of(&surface, settings.direction),
         };
         let texture = make_surface_product(&swatch, &surface, &field, &settings, &Control::default())?;
         if args.with_base { unite_with_base(texture, &surface)? } else { texture }

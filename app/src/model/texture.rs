@@ -8,7 +8,7 @@ use egui::RichText;
 use tracery_core::Product;
 use tracery_core::control::Control;
 use tracery_core::mesh_quilt::{
-    GuidanceField, MAX_SINK_MM, QuiltError, SWATCH_NAMES, Settings, Swatch, make_surface_product,
+    Direction, GuidanceField, MAX_SINK_MM, QuiltError, SWATCH_NAMES, Settings, Swatch, make_surface_product,
 };
 use tracery_core::surface::SurfaceMesh;
 
@@ -46,8 +46,8 @@ impl Job for TextureJob {
     type Error = QuiltError;
 
     fn run(&self, control: &Control) -> Result<Product, QuiltError> {
-        // Around the model's axis; cheap next to the quilting.
-        let field = GuidanceField::around_axis(&self.surface);
+        // Cheap next to the quilting.
+        let field = GuidanceField::of(&self.surface, self.settings.direction);
         make_surface_product(&self.swatch, &self.surface, &field, &self.settings, control)
     }
 }
@@ -94,6 +94,14 @@ pub fn texture_ui(app: &mut TraceryApp, ui: &mut egui::Ui) {
         let s = &mut item.settings;
         ui.add(egui::Slider::new(&mut s.scale, 0.3..=4.0).logarithmic(true).text("Scale"))
             .on_hover_text("The swatch made this many times larger; smaller is finer and slower");
+        ui.horizontal(|ui| {
+            let label = ui.label("Runs");
+            ui.selectable_value(&mut s.direction, Direction::AroundAxis, "around")
+                .on_hover_text("The swatch's rows run around the model's axis, as rings round a vase")
+                .labelled_by(label.id);
+            ui.selectable_value(&mut s.direction, Direction::AlongAxis, "up")
+                .on_hover_text("The swatch's rows run up the model, from its foot to its top");
+        });
         ui.add(egui::Slider::new(&mut s.sink_mm, 0.0..=MAX_SINK_MM).text("Sink (mm)"))
             .on_hover_text("How deep the texture sits in the model, so that the two print as one body");
         ui.horizontal(|ui| {

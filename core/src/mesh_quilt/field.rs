@@ -5,7 +5,7 @@
 
 use glam::DVec3;
 
-use super::QuiltError;
+use super::{Direction, QuiltError};
 use crate::surface::SurfaceMesh;
 
 /// Strokes nearer a face than this, as a fraction of the model's size,
@@ -37,6 +37,30 @@ impl GuidanceField {
             .map(|f| tangent(surface, f, DVec3::Z.cross(surface.point(f, [1.0 / 3.0; 3]))))
             .collect();
         GuidanceField { directions }
+    }
+
+    /// Up the model (the `z` axis), in each face's plane: meridians on a
+    /// vase; any tangent on faces facing straight up or down.
+    ///
+    /// ```
+    /// use tracery_core::mesh_quilt::GuidanceField;
+    /// use tracery_core::surface::{SurfaceMesh, builtin_base};
+    /// let cylinder = SurfaceMesh::new(builtin_base("cylinder").unwrap()).unwrap();
+    /// let f = cylinder.closest_point([25.0, 0.0, 30.0]).face;
+    /// assert!(GuidanceField::along_axis(&cylinder).direction(f).z > 0.99);
+    /// assert!(GuidanceField::around_axis(&cylinder).direction(f).z.abs() < 0.01);
+    /// ```
+    pub fn along_axis(surface: &SurfaceMesh) -> Self {
+        let directions = (0..surface.triangles().len() as u32).map(|f| tangent(surface, f, DVec3::Z)).collect();
+        GuidanceField { directions }
+    }
+
+    /// The field `direction` names.
+    pub fn of(surface: &SurfaceMesh, direction: Direction) -> Self {
+        match direction {
+            Direction::AroundAxis => Self::around_axis(surface),
+            Direction::AlongAxis => Self::along_axis(surface),
+        }
     }
 
     /// Interpolated from `strokes_mm` (each at least two points, drawn on

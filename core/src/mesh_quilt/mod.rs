@@ -39,7 +39,7 @@ pub use merge::MergeCounts;
 pub use patch::MAX_AREA_DISTORTION;
 pub use planar::{MAX_QUILT_TRIANGLES, Quilt, QuiltCounts, quilt_plane};
 pub use product::{Base, make_product, make_surface_product, parse_base, unite_with_base};
-pub use settings::{MAX_CELLS_ACROSS, MAX_SINK_MM, MIN_CELLS_ACROSS, Settings};
+pub use settings::{Direction, MAX_CELLS_ACROSS, MAX_SINK_MM, MIN_CELLS_ACROSS, Settings};
 pub use shapes::{lathe, lathe_ring, torus, tube};
 pub use shell::{Shell, ShellStretch};
 pub use stitch::stitch;

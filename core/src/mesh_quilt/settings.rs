@@ -40,11 +40,34 @@ pub struct Settings {
     /// overlap it and unite with it into one solid, rather than touching
     /// it along a face (which prints as two bodies, or not at all).
     pub sink_mm: f64,
+    /// Which way the swatch's `u` axis runs over a model, unless strokes
+    /// are drawn for it.
+    pub direction: Direction,
+}
+
+/// Which way the swatch's `u` axis runs over a model.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize, Deserialize)]
+#[non_exhaustive]
+pub enum Direction {
+    /// Around the `z` axis, as rings round a vase.
+    #[default]
+    AroundAxis,
+    /// Up the model, from its foot towards its top.
+    AlongAxis,
 }
 
 impl Default for Settings {
     fn default() -> Self {
-        Settings { scale: 1.0, cells_across: 12, lambda: 1.0, mu: 1.0, tolerance: 0.1, seed: 1, sink_mm: 0.3 }
+        Settings {
+            scale: 1.0,
+            cells_across: 12,
+            lambda: 1.0,
+            mu: 1.0,
+            tolerance: 0.1,
+            seed: 1,
+            sink_mm: 0.3,
+            direction: Direction::AroundAxis,
+        }
     }
 }
 
