@@ -53,37 +53,20 @@ impl Mesh {
     /// ```
     pub fn remove_crumbs(&mut self, min_volume_mm3: f64) -> usize {
         let shells = self.shell_of_triangles();
-        let mut volume: std::collections::HashMap<usize, f64> = std::collections::HashMap::new();
+        // Each shell's volume, at the index of the triangle naming it.
+        let mut volume = vec![0.0; self.triangles.len()];
         for (t, &shell) in self.triangles.iter().zip(&shells) {
             let [a, b, c] = t.map(|v| glam::DVec3::from(self.vertices[v as usize]));
-            *volume.entry(shell).or_default() += a.dot(b.cross(c)) / 6.0;
+            volume[shell] += a.dot(b.cross(c)) / 6.0;
         }
-        let crumbs = volume.values().filter(|v| v.abs() < min_volume_mm3).count();
+        let crumb = |shell: usize| f64::abs(volume[shell]) < min_volume_mm3;
+        let crumbs = shells.iter().enumerate().filter(|&(t, &s)| s == t && crumb(s)).count();
         if crumbs == 0 {
             return 0;
         }
-        let keep: Vec<[u32; 3]> = self
-            .triangles
-            .iter()
-            .zip(&shells)
-            .filter(|(_, s)| volume[s].abs() >= min_volume_mm3)
-            .map(|(t, _)| *t)
-            .collect();
-        let mut index = vec![u32::MAX; self.vertices.len()];
-        let mut vertices = Vec::new();
-        let triangles = keep
-            .iter()
-            .map(|t| {
-                t.map(|v| {
-                    if index[v as usize] == u32::MAX {
-                        index[v as usize] = vertices.len() as u32;
-                        vertices.push(self.vertices[v as usize]);
-                    }
-                    index[v as usize]
-                })
-            })
-            .collect();
-        *self = Mesh { vertices, triangles };
+        let triangles = self.triangles.iter().zip(&shells).filter(|&(_, &s)| !crumb(s)).map(|(t, _)| *t).collect();
+        let kept = Mesh { vertices: std::mem::take(&mut self.vertices), triangles };
+        *self = super::compact(kept).0;
         crumbs
     }
 }

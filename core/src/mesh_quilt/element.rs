@@ -51,6 +51,14 @@ impl Element {
         self.to_mesh().sanity_check().is_ok()
     }
 
+    /// A shared [`Mesh`] as an element (whole, however many parts it has).
+    pub fn from_mesh(mesh: &Mesh) -> Element {
+        Element {
+            vertices: mesh.vertices.iter().map(|&v| DVec3::from_array(v)).collect(),
+            triangles: mesh.triangles.clone(),
+        }
+    }
+
     /// The element as a shared [`Mesh`].
     pub fn to_mesh(&self) -> Mesh {
         Mesh { vertices: self.vertices.iter().map(|v| v.to_array()).collect(), triangles: self.triangles.clone() }

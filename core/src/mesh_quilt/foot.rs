@@ -93,9 +93,7 @@ pub fn trim_below(
         // meets one of the element's but the floor.
         let margin = DVec3::splat(1.0 + (hi - lo).max_element());
         let under = cuboid(lo - margin, DVec3::new(hi.x + margin.x, hi.y + margin.y, floor_z_mm));
-        let cut = difference_solids(&e.to_mesh(), &under)?;
-        let cut =
-            Element { vertices: cut.vertices.iter().map(|&v| DVec3::from(v)).collect(), triangles: cut.triangles };
+        let cut = Element::from_mesh(&difference_solids(&e.to_mesh(), &under)?);
         let (pieces, crumbs): (Vec<Element>, Vec<Element>) =
             cut.parts().into_iter().filter(|p| !p.triangles.is_empty()).partition(&keep_piece);
         if pieces.is_empty() {

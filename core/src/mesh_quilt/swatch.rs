@@ -56,11 +56,7 @@ impl Swatch {
             let [p, q] = [a, b].map(|i| DVec3::from_array(mesh.vertices[i as usize]));
             return Err(QuiltError::NonManifold { edges: crowded.len(), at_mm: (0.5 * (p + q)).to_array() });
         }
-        let whole = Element {
-            vertices: mesh.vertices.iter().map(|&v| DVec3::from_array(v)).collect(),
-            triangles: mesh.triangles.clone(),
-        };
-        let elements = whole.parts();
+        let elements = Element::from_mesh(mesh).parts();
         for (i, element) in elements.iter().enumerate() {
             if let Err(defect) = element.to_mesh().sanity_check() {
                 return Err(QuiltError::OpenElement { element: i + 1, reason: defect.to_string() });
