@@ -81,36 +81,32 @@ pub fn texture_ui(app: &mut TraceryApp, ui: &mut egui::Ui) {
         .changed()
         && item.on;
     // Editable while off too: choose first, then turn it on.
-    {
-        ui.horizontal(|ui| {
-            let label = ui.label("Swatch");
-            let combo = egui::ComboBox::from_id_salt("swatch").selected_text(item.swatch.clone()).show_ui(ui, |ui| {
-                for name in SWATCH_NAMES {
-                    ui.selectable_value(&mut item.swatch, name.to_string(), name.to_string());
-                }
-            });
-            combo.response.labelled_by(label.id);
+    ui.horizontal(|ui| {
+        let label = ui.label("Swatch");
+        let combo = egui::ComboBox::from_id_salt("swatch").selected_text(item.swatch.clone()).show_ui(ui, |ui| {
+            for name in SWATCH_NAMES {
+                ui.selectable_value(&mut item.swatch, name.to_string(), name.to_string());
+            }
         });
-        let s = &mut item.settings;
-        ui.add(egui::Slider::new(&mut s.scale, 0.3..=4.0).logarithmic(true).text("Scale"))
-            .on_hover_text("The swatch made this many times larger; smaller is finer and slower");
-        ui.horizontal(|ui| {
-            let label = ui.label("Runs");
-            ui.selectable_value(&mut s.direction, Direction::AroundAxis, "around")
-                .on_hover_text("The swatch's rows run around the model's axis, as rings round a vase")
-                .labelled_by(label.id);
-            ui.selectable_value(&mut s.direction, Direction::AlongAxis, "up")
-                .on_hover_text("The swatch's rows run up the model, from its foot to its top");
-        });
-        ui.add(egui::Slider::new(&mut s.sink_mm, 0.0..=MAX_SINK_MM).text("Sink (mm)"))
-            .on_hover_text("How deep the texture sits in the model, so that the two print as one body");
-        ui.horizontal(|ui| {
-            let label = ui.label("Seed");
-            ui.add(egui::DragValue::new(&mut s.seed))
-                .labelled_by(label.id)
-                .on_hover_text("Another seed, another texture");
-        });
-    }
+        combo.response.labelled_by(label.id);
+    });
+    let s = &mut item.settings;
+    ui.add(egui::Slider::new(&mut s.scale, 0.3..=4.0).logarithmic(true).text("Scale"))
+        .on_hover_text("The swatch made this many times larger; smaller is finer and slower");
+    ui.horizontal(|ui| {
+        let label = ui.label("Runs");
+        ui.selectable_value(&mut s.direction, Direction::AroundAxis, "around")
+            .on_hover_text("The swatch's rows run around the model's axis, as rings round a vase")
+            .labelled_by(label.id);
+        ui.selectable_value(&mut s.direction, Direction::AlongAxis, "up")
+            .on_hover_text("The swatch's rows run up the model, from its foot to its top");
+    });
+    ui.add(egui::Slider::new(&mut s.sink_mm, 0.0..=MAX_SINK_MM).text("Sink (mm)"))
+        .on_hover_text("How deep the texture sits in the model, so that the two print as one body");
+    ui.horizontal(|ui| {
+        let label = ui.label("Seed");
+        ui.add(egui::DragValue::new(&mut s.seed)).labelled_by(label.id).on_hover_text("Another seed, another texture");
+    });
     if turned_on {
         // United with the model, the texture prints as one body with it.
         app.doc.model.with_model = true;
@@ -130,9 +126,10 @@ pub fn texture_status_ui(app: &mut TraceryApp, ui: &mut egui::Ui) {
         let count = |name| product.facts.count(name).unwrap_or(0);
         format!("{} elements, {} faces, {} patches", count("elements"), count("faces"), count("patches"))
     });
-    let running = matches!(app.texture_worker.state(TEXTURE), Some(JobState::Running { .. }))
-        || app.texture_worker.is_stale(TEXTURE);
-    if running && ui.button("Stop").on_hover_text("Stop growing the texture and turn it off").clicked() {
+    // Stale: waiting to start, or running.
+    if app.texture_worker.is_stale(TEXTURE)
+        && ui.button("Stop").on_hover_text("Stop growing the texture and turn it off").clicked()
+    {
         app.doc.model.texture.on = false;
         app.message = Some(("Texture stopped and turned off; turn it on to grow it again".into(), false));
     }
