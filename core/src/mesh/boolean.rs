@@ -27,6 +27,24 @@ fn manifold(mesh: &Mesh, which: &'static str) -> Result<Manifold, BooleanError> 
     Manifold::new(&positions, &indices).map_err(|_| BooleanError::NotManifold { which })
 }
 
+/// Whether the booleans take `mesh` as a solid. A boolean's own output can
+/// fail this: cutting a solid that passes through itself can leave a pinch
+/// (two vertices at one place) that is closed edge by edge yet refused as
+/// the input of the next boolean.
+///
+/// ```
+/// use tracery_core::mesh::{Mesh, is_boolean_solid};
+/// let tetra = Mesh {
+///     vertices: vec![[0.0; 3], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]],
+///     triangles: vec![[0, 2, 1], [0, 1, 3], [1, 2, 3], [0, 3, 2]],
+/// };
+/// assert!(is_boolean_solid(&tetra));
+/// assert!(!is_boolean_solid(&Mesh { triangles: tetra.triangles[..3].to_vec(), ..tetra }));
+/// ```
+pub fn is_boolean_solid(mesh: &Mesh) -> bool {
+    manifold(mesh, "model").is_ok()
+}
+
 fn mesh_of(m: &Manifold) -> Mesh {
     Mesh {
         vertices: m.ps.iter().map(|p| [p.x, p.y, p.z]).collect(),

@@ -7,7 +7,7 @@
 use glam::DVec3;
 
 use super::Element;
-use crate::mesh::{BooleanError, Mesh, difference_solids};
+use crate::mesh::{BooleanError, Mesh, difference_solids, is_boolean_solid};
 
 /// How far below the floor a vertex must reach before its element is cut,
 /// mm: rounding in the shell map leaves vertices a hair below it.
@@ -55,9 +55,10 @@ fn cuboid(lo: DVec3, hi: DVec3) -> Mesh {
 /// Cuts every element that reaches below `floor_z_mm` off flat at it
 /// (a boolean difference with a box under the floor, so each stays
 /// closed), and removes those wholly below. Each piece of a cut element is
-/// kept only where `keep_piece` says so: a rivet hanging below a model's
-/// foot leaves a sliver on the bed that touches nothing, and would print
-/// as a loose crumb. An element cut in two becomes two elements.
+/// kept only where `keep_piece` says so, and the booleans still take it as
+/// a solid: a rivet hanging below a model's foot leaves a sliver on the bed
+/// that touches nothing, and would print as a loose crumb. An element cut
+/// in two becomes two elements.
 ///
 /// ```
 /// use glam::DVec3;
@@ -94,8 +95,14 @@ pub fn trim_below(
         let margin = DVec3::splat(1.0 + (hi - lo).max_element());
         let under = cuboid(lo - margin, DVec3::new(hi.x + margin.x, hi.y + margin.y, floor_z_mm));
         let cut = Element::from_mesh(&difference_solids(&e.to_mesh(), &under)?);
-        let (pieces, crumbs): (Vec<Element>, Vec<Element>) =
-            cut.parts().into_iter().filter(|p| !p.triangles.is_empty()).partition(&keep_piece);
+        // A piece the booleans would refuse (a stitched element that passed
+        // through itself can come out of the cut pinched) would stop the
+        // texture from being united with the model: it goes with the crumbs.
+        let (pieces, crumbs): (Vec<Element>, Vec<Element>) = cut
+            .parts()
+            .into_iter()
+            .filter(|p| !p.triangles.is_empty())
+            .partition(|p| keep_piece(p) && is_boolean_solid(&p.to_mesh()));
         if pieces.is_empty() {
             trimmed.removed += 1;
         } else {
