@@ -151,7 +151,7 @@ impl TraceryApp {
                         .into_iter()
                         .map(|(points_mm, closed)| CurvePath { points_mm, closed })
                         .collect();
-                    let exemplar = CurveExemplar { name: "clone source".into(), paths };
+                    let exemplar = CurveExemplar::from_paths("clone source", paths);
                     exemplar
                         .validate(fill.settings.delta_mm)
                         .map_err(|e| format!("Nothing to clone in the source rectangle: {e}"))?;

@@ -1,5 +1,6 @@
 //! Region fill over the corpus of real ornaments: every SVG in a folder
-//! read as a curve exemplar (its filled shapes' outlines), scaled so its
+//! read as a curve exemplar (its filled shapes' outlines, or the centre
+//! lines of those drawn as thin bands), scaled so its
 //! larger side is `--size` mm like the built-ins, and filled into a
 //! 60 × 40 mm rectangle with a time limit. Prints one line per ornament and
 //! a summary (outcomes, times, crossings and coverage measured on the
@@ -106,7 +107,8 @@ fn fill(exemplar: &CurveExemplar, region: &Region, bounds: &Rect, size_mm: f64, 
         Err(FillError::Cancelled(_)) => Outcome::TimedOut,
         Err(e) => Outcome::Refused(e.to_string()),
         Ok(product) => {
-            let scaled = exemplar.scaled(settings.exemplar_scale);
+            // Compared with what the fill learns: filled bands as their centre lines.
+            let scaled = exemplar.scaled(settings.exemplar_scale).curves(settings.delta_mm);
             let ex_paths: Vec<_> = scaled.paths.iter().map(|p| (p.points_mm.clone(), p.closed)).collect();
             let ex_box = Rect::from_points(ex_paths.iter().flat_map(|p| p.0.iter().copied())).expect("points");
             let ex = curve_statistics_within(&ex_paths, &ex_box, margin);

@@ -84,6 +84,11 @@ pub struct SvgShape {
     pub filled: bool,
     /// Whether its path is stroked.
     pub stroked: bool,
+    /// Which path of the document it belongs to, counted from 0: the
+    /// subpaths of one filled path make one shape (a hole is one of them).
+    pub element: usize,
+    /// How its path's fill decides what is inside.
+    pub fill_rule: crate::geom::FillRule,
 }
 
 /// Every subpath of every path of an SVG document, flattened so that no
@@ -104,11 +109,17 @@ pub fn svg_shapes(data: &[u8], tolerance_mm: f64) -> Result<Vec<SvgShape>, Curve
     let scale = if has_physical_size(data) { MM_PER_PX } else { 1.0 };
     let tolerance = (tolerance_mm / scale).max(1e-9);
     let mut shapes = Vec::new();
-    fn walk(group: &usvg::Group, tolerance: f64, scale: f64, shapes: &mut Vec<SvgShape>) {
+    fn walk(group: &usvg::Group, tolerance: f64, scale: f64, shapes: &mut Vec<SvgShape>, elements: &mut usize) {
         for node in group.children() {
             match node {
-                usvg::Node::Group(g) => walk(g, tolerance, scale, shapes),
+                usvg::Node::Group(g) => walk(g, tolerance, scale, shapes, elements),
                 usvg::Node::Path(path) => {
+                    let element = *elements;
+                    *elements += 1;
+                    let fill_rule = match path.fill().map(|f| f.rule()) {
+                        Some(usvg::FillRule::EvenOdd) => crate::geom::FillRule::EvenOdd,
+                        _ => crate::geom::FillRule::NonZero,
+                    };
                     for sub in flatten_subpaths(path.data(), path.abs_transform(), tolerance) {
                         let mut points_mm: Vec<DVec2> = sub.points.iter().map(|p| *p * scale).collect();
                         points_mm.dedup_by(|a, b| a.distance(*b) < 1e-9);
@@ -123,6 +134,8 @@ pub fn svg_shapes(data: &[u8], tolerance_mm: f64) -> Result<Vec<SvgShape>, Curve
                             closed: sub.closed,
                             filled: path.fill().is_some(),
                             stroked: path.stroke().is_some(),
+                            element,
+                            fill_rule,
                         });
                     }
                 }
@@ -130,7 +143,7 @@ pub fn svg_shapes(data: &[u8], tolerance_mm: f64) -> Result<Vec<SvgShape>, Curve
             }
         }
     }
-    walk(tree.root(), tolerance, scale, &mut shapes);
+    walk(tree.root(), tolerance, scale, &mut shapes, &mut 0);
     if shapes.iter().flat_map(|s| &s.points_mm).any(|p| !p.is_finite()) {
         return Err(CurveError::NotFinite);
     }

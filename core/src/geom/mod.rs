@@ -4,6 +4,8 @@
 
 mod boolean;
 mod bridges;
+mod cdt_inside;
+mod centre_line;
 mod clip;
 mod disc;
 mod fill;
@@ -24,6 +26,8 @@ mod triangle_grid;
 
 pub use boolean::{FillRule, clip_to_rect, difference, intersection, resolve_contours, union};
 pub use bridges::join_parts;
+pub(crate) use cdt_inside::faces_inside;
+pub use centre_line::{CentreLines, MAX_CENTRE_LINE_POINTS, centre_lines};
 pub use clip::{clip_polylines, ring_crossing};
 pub use disc::{arc_step, disc};
 pub use fill::fill_triangles;

@@ -215,31 +215,8 @@ fn extrude_exactly(
     if let Some(edge_mm) = fine {
         return Ok(refined(cdt, edge_mm));
     }
-    // Flood from the outer face: crossing a ring edge toggles inside/outside.
-    let mut inside: Vec<Option<bool>> = vec![None; cdt.all_faces().len()];
-    let mut queue = std::collections::VecDeque::new();
-    for hull_edge in cdt.convex_hull() {
-        for e in [hull_edge, hull_edge.rev()] {
-            if let Some(face) = e.face().as_inner()
-                && inside[face.fix().index()].is_none()
-            {
-                inside[face.fix().index()] = Some(e.as_undirected().is_constraint_edge());
-                queue.push_back(face.fix());
-            }
-        }
-    }
-    while let Some(fixed) = queue.pop_front() {
-        let face = cdt.face(fixed);
-        let here = inside[fixed.index()].unwrap_or(false);
-        for edge in face.adjacent_edges() {
-            let Some(neighbour) = edge.rev().face().as_inner() else { continue };
-            let slot = &mut inside[neighbour.fix().index()];
-            if slot.is_none() {
-                *slot = Some(here != edge.as_undirected().is_constraint_edge());
-                queue.push_back(neighbour.fix());
-            }
-        }
-    }
+    // Crossing a ring edge toggles inside and outside.
+    let inside = crate::geom::faces_inside(&cdt);
     let count = points.len() as u32;
     let mut mesh = Mesh { vertices: Vec::with_capacity(2 * points.len()), triangles: Vec::new() };
     mesh.vertices.extend(points.iter().map(|p| [p.x, p.y, 0.0]));

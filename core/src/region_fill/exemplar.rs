@@ -5,6 +5,7 @@ use std::path::Path;
 
 use super::{BUILTIN_CURVES, CurvePath, FillError, builtin_curves};
 use crate::curve::svg_shapes;
+use crate::geom::{Polygon, centre_lines, resolve_contours};
 
 /// Largest distance between an exemplar's curves and the polylines they
 /// are read as, mm: far below any sample spacing.
@@ -14,19 +15,49 @@ pub const EXEMPLAR_TOLERANCE_MM: f64 = 0.01;
 /// drawing 100 mm square of dense curves at 1.5 mm.
 pub const MAX_EXEMPLAR_SAMPLES: usize = 12_000;
 
+/// A filled shape is read as its centre lines when most of it is a band
+/// no wider than this many sample spacings: its two outlines would be
+/// closer than the sampling can keep apart.
+pub const BAND_MAX_WIDTH_SPACINGS: f64 = 1.5;
+
+/// The share of a shape's centre lines that must be band-wide: what is
+/// left is corners and junctions, where chords run wider.
+const BAND_SHARE: f64 = 0.8;
+
+/// The outlines of a filled shape are resampled this many spacings apart
+/// to find its centre lines: fine enough to follow a band's bends.
+const CENTRE_LINE_STEP_SPACINGS: f64 = 0.2;
+
 /// A named set of curves to learn from.
 #[derive(Clone, Debug, PartialEq)]
 pub struct CurveExemplar {
     /// A built-in's name, or the file's stem.
     pub name: String,
-    /// The curves, mm, `y` up.
+    /// The curves, mm, `y` up: stroked paths, and the outlines of filled
+    /// shapes.
     pub paths: Vec<CurvePath>,
+    /// The filled shapes, whose outlines are among `paths`.
+    pub shapes: Vec<FilledShape>,
+}
+
+/// A filled shape of an exemplar: one polygon of a filled SVG path.
+#[derive(Clone, Debug, PartialEq)]
+pub struct FilledShape {
+    /// The shape, mm.
+    pub polygon: Polygon,
+    /// Its rings are `paths[first_path..]` of the exemplar, the outer first.
+    pub first_path: usize,
 }
 
 impl CurveExemplar {
+    /// An exemplar of `paths` alone, with no filled shapes.
+    pub fn from_paths(name: impl Into<String>, paths: Vec<CurvePath>) -> CurveExemplar {
+        CurveExemplar { name: name.into(), paths, shapes: Vec::new() }
+    }
+
     /// The built-in `name`, or `None`.
     pub fn builtin(name: &str) -> Option<CurveExemplar> {
-        builtin_curves(name).map(|paths| CurveExemplar { name: name.to_string(), paths })
+        builtin_curves(name).map(|paths| CurveExemplar::from_paths(name, paths))
     }
 
     /// Every subpath of an SVG drawing's stroked paths, and the outline of
@@ -45,17 +76,67 @@ impl CurveExemplar {
     /// assert!(CurveExemplar::from_svg_data("empty", br#"<svg xmlns="http://www.w3.org/2000/svg"/>"#).is_err());
     /// ```
     pub fn from_svg_data(name: impl Into<String>, data: &[u8]) -> Result<CurveExemplar, FillError> {
-        let paths: Vec<CurvePath> = svg_shapes(data, EXEMPLAR_TOLERANCE_MM)?
-            .into_iter()
-            .filter(|s| (s.stroked || s.filled) && s.points_mm.len() >= 2)
-            // A fill closes every subpath, with a `Z` or without.
-            .map(|s| CurvePath { closed: (s.closed || s.filled) && s.points_mm.len() > 2, points_mm: s.points_mm })
+        let svg = svg_shapes(data, EXEMPLAR_TOLERANCE_MM)?;
+        let mut paths: Vec<CurvePath> = svg
+            .iter()
+            .filter(|s| s.stroked && s.points_mm.len() >= 2)
+            .map(|s| CurvePath { closed: s.closed && s.points_mm.len() > 2, points_mm: s.points_mm.clone() })
             .filter(|p| p.length_mm() > 0.0)
             .collect();
+        // The subpaths of one filled path make its shapes together, by its
+        // fill rule: a subpath inside another may be a hole.
+        let mut shapes = Vec::new();
+        let filled: Vec<_> = svg.iter().filter(|s| s.filled && !s.stroked && s.points_mm.len() > 2).collect();
+        for element in filled.chunk_by(|a, b| a.element == b.element) {
+            let rings: Vec<_> = element.iter().map(|s| s.points_mm.clone()).collect();
+            for polygon in resolve_contours(&rings, element[0].fill_rule).polygons {
+                let first_path = paths.len();
+                paths.extend(polygon.rings().map(|r| CurvePath { points_mm: r.clone(), closed: true }));
+                shapes.push(FilledShape { polygon, first_path });
+            }
+        }
         if paths.is_empty() {
             return Err(FillError::NoStrokes);
         }
-        Ok(CurveExemplar { name: name.into(), paths })
+        Ok(CurveExemplar { name: name.into(), paths, shapes })
+    }
+
+    /// The curves the fill learns from at sample spacing `delta_mm`: each
+    /// filled shape that is mostly a band no wider than
+    /// [`BAND_MAX_WIDTH_SPACINGS`] spacings is read as its centre lines,
+    /// the line it was drawn along; other shapes as their outlines.
+    ///
+    /// ```
+    /// use tracery_core::region_fill::CurveExemplar;
+    /// // A ring 1 mm wide, filled: at 1.5 mm spacing, one closed centre line.
+    /// let svg = br#"<svg xmlns="http://www.w3.org/2000/svg" viewBox="-20 -20 40 40">
+    ///   <path fill-rule="evenodd" d="M-10.5,0 A10.5,10.5 0 1 0 10.5,0 A10.5,10.5 0 1 0 -10.5,0 Z M-9.5,0 A9.5,9.5 0 1 0 9.5,0 A9.5,9.5 0 1 0 -9.5,0 Z"/></svg>"#;
+    /// let ring = CurveExemplar::from_svg_data("ring", svg).unwrap();
+    /// assert_eq!(ring.paths.len(), 2, "two outlines");
+    /// let curves = ring.curves(1.5);
+    /// assert_eq!(curves.paths.len(), 1);
+    /// assert!(curves.paths[0].closed && (curves.paths[0].length_mm() - 20.0 * std::f64::consts::PI).abs() < 1.0);
+    /// // At 0.5 mm spacing the two outlines are far enough apart to keep.
+    /// assert_eq!(ring.curves(0.5).paths.len(), 2);
+    /// ```
+    pub fn curves(&self, delta_mm: f64) -> CurveExemplar {
+        if self.shapes.is_empty() {
+            return self.clone();
+        }
+        let mut outline = vec![false; self.paths.len()];
+        let mut lines = Vec::new();
+        for shape in &self.shapes {
+            let Some(centre) = centre_lines(&shape.polygon, CENTRE_LINE_STEP_SPACINGS * delta_mm) else { continue };
+            if centre.paths.is_empty() || centre.width_at(BAND_SHARE) > BAND_MAX_WIDTH_SPACINGS * delta_mm {
+                continue;
+            }
+            let rings = shape.polygon.rings().count();
+            outline[shape.first_path..(shape.first_path + rings).min(self.paths.len())].fill(true);
+            lines.extend(centre.paths.into_iter().map(|(points_mm, closed)| CurvePath { points_mm, closed }));
+        }
+        let paths =
+            self.paths.iter().zip(&outline).filter(|(_, out)| !**out).map(|(p, _)| p.clone()).chain(lines).collect();
+        CurveExemplar::from_paths(self.name.clone(), paths)
     }
 
     /// A built-in by name, or an SVG file.
@@ -93,7 +174,12 @@ impl CurveExemplar {
             .iter()
             .map(|p| CurvePath { points_mm: p.points_mm.iter().map(|q| *q * factor).collect(), closed: p.closed })
             .collect();
-        CurveExemplar { name: self.name.clone(), paths }
+        let shapes = self
+            .shapes
+            .iter()
+            .map(|s| FilledShape { polygon: s.polygon.map_points(|q| q * factor), first_path: s.first_path })
+            .collect();
+        CurveExemplar { name: self.name.clone(), paths, shapes }
     }
 
     /// Checks the exemplar has something to learn from and is not so large

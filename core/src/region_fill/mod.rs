@@ -27,7 +27,7 @@ pub use assignment::{MatchedPair, assign_edges, assign_positions, existence_vote
 pub use builtin::{BUILTIN_CURVES, builtin_curves};
 pub use curve_path::CurvePath;
 pub use error::FillError;
-pub use exemplar::{CurveExemplar, EXEMPLAR_TOLERANCE_MM, MAX_EXEMPLAR_SAMPLES};
+pub use exemplar::{BAND_MAX_WIDTH_SPACINGS, CurveExemplar, EXEMPLAR_TOLERANCE_MM, FilledShape, MAX_EXEMPLAR_SAMPLES};
 pub use fragments::FragmentLimits;
 pub use joins::join_drawn_ends;
 pub use matching::{Matching, robust_match};

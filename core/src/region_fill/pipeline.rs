@@ -194,6 +194,8 @@ fn predict_timed(
         scaled = exemplar.scaled(settings.exemplar_scale);
         &scaled
     };
+    // Filled bands are learned as the lines they were drawn along.
+    let exemplar = &timings.time("centre_lines", || exemplar.curves(settings.delta_mm));
     exemplar.validate(settings.delta_mm)?;
     check_region(region, settings)?;
     let bounds = region.bounds().ok_or(FillError::EmptyRegion)?;
