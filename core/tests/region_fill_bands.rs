@@ -63,17 +63,24 @@ fn a_bands_centre_line_runs_down_its_middle_with_no_spurs() {
     assert!((centre.width_at(0.8) - 1.0).abs() < 0.2, "width {:.2}", centre.width_at(0.8));
 }
 
+/// Bands 1.2 mm wide, 10 mm long, from the origin along `directions`, united.
+fn arms(directions: &[DVec2]) -> tracery_core::geom::Polygon {
+    let arms: Vec<_> = directions.iter().map(|d| brush_stroke(&[DVec2::ZERO, *d * 10.0], 1.2, false)).collect();
+    let shape = union(&arms.iter().collect::<Vec<_>>());
+    assert_eq!(shape.polygons.len(), 1);
+    shape.polygons[0].clone()
+}
+
+/// Whether segments `a` and `b` cross at a point inside both.
+fn segments_cross(a: [DVec2; 2], b: [DVec2; 2]) -> bool {
+    let side = |p: DVec2, q: DVec2, r: DVec2| (q - p).perp_dot(r - p);
+    side(a[0], a[1], b[0]) * side(a[0], a[1], b[1]) < 0.0 && side(b[0], b[1], a[0]) * side(b[0], b[1], a[1]) < 0.0
+}
+
 #[test]
 fn bands_that_meet_give_lines_that_meet_at_one_junction() {
-    // A plus: four arms 10 mm long from the origin, 1.2 mm wide.
-    let arms: Vec<_> = [DVec2::X, DVec2::Y, -DVec2::X, -DVec2::Y]
-        .into_iter()
-        .map(|d| brush_stroke(&[DVec2::ZERO, d * 10.0], 1.2, false))
-        .collect();
-    let plus = union(&arms.iter().collect::<Vec<_>>());
-    assert_eq!(plus.polygons.len(), 1);
-    let centre = centre_lines(&plus.polygons[0], 0.2).expect("triangulated");
-    assert_eq!(centre.paths.len(), 4, "one line per arm");
+    let centre = centre_lines(&arms(&[DVec2::X, DVec2::Y, -DVec2::X]), 0.2).expect("triangulated");
+    assert_eq!(centre.paths.len(), 3, "one line per arm of the T");
     // Each arm's line has one end out at its tip and one at the junction.
     let mut inner: Vec<DVec2> = Vec::new();
     for (points, _) in &centre.paths {
@@ -83,7 +90,24 @@ fn bands_that_meet_give_lines_that_meet_at_one_junction() {
         inner.push(near);
     }
     assert!(inner.iter().all(|p| p.distance(inner[0]) < 1e-9), "the arms meet at one point: {inner:?}");
-    assert!(inner[0].length() < 0.6, "the junction lies at the crossing, not {:?}", inner[0]);
+    assert!(inner[0].length() < 0.6, "the junction lies where the bands meet, not {:?}", inner[0]);
+}
+
+#[test]
+fn bands_that_cross_give_lines_that_cross() {
+    let centre = centre_lines(&arms(&[DVec2::X, DVec2::Y, -DVec2::X, -DVec2::Y]), 0.2).expect("triangulated");
+    assert_eq!(centre.paths.len(), 2, "a plus is two lines crossing, not four meeting");
+    let segments = |k: usize| -> Vec<[DVec2; 2]> { centre.paths[k].0.windows(2).map(|s| [s[0], s[1]]).collect() };
+    let crossings = segments(0)
+        .iter()
+        .flat_map(|a| segments(1).into_iter().map(move |b| (*a, b)))
+        .filter(|(a, b)| segments_cross(*a, *b))
+        .count();
+    assert_eq!(crossings, 1, "the two lines cross once");
+    for (points, _) in &centre.paths {
+        let (a, b) = (points[0], *points.last().unwrap());
+        assert!(a.distance(b) > 18.0, "each line runs tip to tip, not {a:?} to {b:?}");
+    }
 }
 
 /// A fret drawn as filled bands 1 mm wide (a row of Greek keys, each a

@@ -25,6 +25,10 @@ pub const MAX_CENTRE_LINE_POINTS: usize = 400_000;
 /// is a corner of the outline, not a branch of the band.
 const SPUR_WIDTHS: f64 = 1.0;
 
+/// Two lines meeting at a junction of four arms cross there when each
+/// turns by less than 40° through it (the cosine of 40°).
+const STRAIGHT_THROUGH_COS: f64 = 0.766;
+
 /// The centre lines of a shape, and how wide its bands are.
 #[derive(Clone, Debug, Default, PartialEq)]
 pub struct CentreLines {
@@ -113,6 +117,7 @@ pub fn centre_lines(polygon: &Polygon, step_mm: f64) -> Option<CentreLines> {
     graph.prune_spurs();
     graph.merge_near_junctions();
     graph.prune_spurs();
+    graph.cross_through();
     let paths = graph.trace().into_iter().map(|(points, closed)| (smoothed(points, closed), closed)).collect();
     Some(CentreLines { paths, widths_mm })
 }
@@ -296,6 +301,47 @@ impl Graph {
                 self.width[junction] = wide;
             }
         }
+    }
+
+    /// Where four arms meet as two lines running straight through each
+    /// other (a flourish crossing itself, drawn as one filled shape), the
+    /// junction becomes a crossing: each line's arms are linked across it,
+    /// so that the two lines cross there as the drawing's did, rather than
+    /// four lines ending at one point.
+    fn cross_through(&mut self) {
+        for junction in 0..self.at.len() {
+            if !self.alive[junction] || self.degree(junction) != 4 {
+                continue;
+            }
+            let arms: Vec<usize> = self.neighbours(junction).collect();
+            let heading: Vec<DVec2> = arms.iter().map(|&a| self.heading(junction, a)).collect();
+            // The pairing whose lines bend least; each must run nearly straight.
+            let pairings = [[(0, 1), (2, 3)], [(0, 2), (1, 3)], [(0, 3), (1, 2)]];
+            let bend = |(a, b): (usize, usize)| heading[a].dot(heading[b]);
+            let best = pairings
+                .iter()
+                .min_by(|p, q| (bend(p[0]) + bend(p[1])).total_cmp(&(bend(q[0]) + bend(q[1]))))
+                .expect("three pairings");
+            if best.iter().any(|&pair| bend(pair) > -STRAIGHT_THROUGH_COS) {
+                continue;
+            }
+            self.alive[junction] = false;
+            for &(a, b) in best {
+                self.link(arms[a], arms[b]);
+            }
+        }
+    }
+
+    /// The direction from `from` along the arm through its neighbour
+    /// `first`, taken about one width of `from` away (or where the arm
+    /// ends), so that the zigzag of the first chords does not decide it.
+    fn heading(&self, from: usize, first: usize) -> DVec2 {
+        let (mut previous, mut node) = (from, first);
+        while self.at[node].distance(self.at[from]) < self.width[from] && self.degree(node) == 2 {
+            let Some(next) = self.neighbours(node).find(|&n| n != previous) else { break };
+            (previous, node) = (node, next);
+        }
+        (self.at[node] - self.at[from]).normalize_or_zero()
     }
 
     /// Removes, until none is left, every branch from a free end to a
