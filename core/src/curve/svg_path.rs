@@ -116,10 +116,7 @@ pub fn svg_shapes(data: &[u8], tolerance_mm: f64) -> Result<Vec<SvgShape>, Curve
                 usvg::Node::Path(path) => {
                     let element = *elements;
                     *elements += 1;
-                    let fill_rule = match path.fill().map(|f| f.rule()) {
-                        Some(usvg::FillRule::EvenOdd) => crate::geom::FillRule::EvenOdd,
-                        _ => crate::geom::FillRule::NonZero,
-                    };
+                    let fill_rule = path.fill().map(|f| f.rule().into()).unwrap_or_default();
                     for sub in flatten_subpaths(path.data(), path.abs_transform(), tolerance) {
                         let mut points_mm: Vec<DVec2> = sub.points.iter().map(|p| *p * scale).collect();
                         points_mm.dedup_by(|a, b| a.distance(*b) < 1e-9);

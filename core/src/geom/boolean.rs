@@ -27,6 +27,15 @@ pub enum FillRule {
     EvenOdd,
 }
 
+impl From<usvg::FillRule> for FillRule {
+    fn from(rule: usvg::FillRule) -> Self {
+        match rule {
+            usvg::FillRule::NonZero => FillRule::NonZero,
+            usvg::FillRule::EvenOdd => FillRule::EvenOdd,
+        }
+    }
+}
+
 impl From<FillRule> for OverlayFill {
     fn from(rule: FillRule) -> Self {
         match rule {

@@ -79,13 +79,12 @@ impl CentreLines {
 pub fn centre_lines(polygon: &Polygon, step_mm: f64) -> Option<CentreLines> {
     let cdt = triangulate(polygon, step_mm)?;
     let inside = faces_inside(&cdt);
-    let is_inside = |face: FaceHandle<'_>| inside[face.fix().index()] == Some(true);
     let chords_of = |face| chords_of(face, &inside);
     let capped = cap_chords(&cdt, &inside);
     let mut graph = Graph::default();
     let mut chord_nodes: HashMap<usize, usize> = HashMap::new();
     let mut widths_mm = Vec::new();
-    for face in cdt.inner_faces().filter(|f| is_inside(*f)) {
+    for face in cdt.inner_faces().filter(|f| filled(*f, &inside)) {
         let mut chords = Vec::with_capacity(3);
         for edge in chords_of(face) {
             if capped.contains(&edge.as_undirected().fix().index()) {
@@ -134,11 +133,10 @@ type EdgeHandle<'a> = DirectedEdgeHandle<'a, Point2<f64>, (), CdtEdge<()>, ()>;
 /// through a fan of triangles into one side. A bump on a band's side fits
 /// too, up to the triangle where it meets the band, and leaves no branch.
 fn cap_chords(cdt: &Cdt, inside: &[Option<bool>]) -> std::collections::HashSet<usize> {
-    let is_inside = |face: FaceHandle<'_>| inside[face.fix().index()] == Some(true);
     let chords_of = |face| chords_of(face, inside);
     let point = |p: Point2<f64>| DVec2::new(p.x, p.y);
     let mut capped = std::collections::HashSet::new();
-    for end in cdt.inner_faces().filter(|f| is_inside(*f)) {
+    for end in cdt.inner_faces().filter(|f| filled(*f, inside)) {
         let chords = chords_of(end);
         let [mut chord] = chords[..] else { continue };
         let mut merged: Vec<DVec2> = end.positions().map(point).to_vec();
@@ -160,13 +158,17 @@ fn cap_chords(cdt: &Cdt, inside: &[Option<bool>]) -> std::collections::HashSet<u
     capped
 }
 
+/// Whether `face` lies inside the shape, by [`faces_inside`]'s flood.
+fn filled(face: FaceHandle<'_>, inside: &[Option<bool>]) -> bool {
+    inside[face.fix().index()] == Some(true)
+}
+
 /// The edges of a filled face that cross to another filled face.
 fn chords_of<'a>(face: FaceHandle<'a>, inside: &[Option<bool>]) -> Vec<EdgeHandle<'a>> {
     face.adjacent_edges()
         .into_iter()
         .filter(|e| {
-            !e.as_undirected().is_constraint_edge()
-                && e.rev().face().as_inner().is_some_and(|f| inside[f.fix().index()] == Some(true))
+            !e.as_undirected().is_constraint_edge() && e.rev().face().as_inner().is_some_and(|f| filled(f, inside))
         })
         .collect()
 }

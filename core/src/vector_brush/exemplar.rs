@@ -165,14 +165,10 @@ fn collect_group(
                 let transform = path.abs_transform();
                 if let Some(fill) = path.fill() {
                     *painted = true;
-                    let rule = match fill.rule() {
-                        usvg::FillRule::NonZero => FillRule::NonZero,
-                        usvg::FillRule::EvenOdd => FillRule::EvenOdd,
-                    };
                     let contours = flatten(path.data(), transform, tolerance);
                     *vertices += contours.iter().map(Vec::len).sum::<usize>();
                     check_vertices(*vertices, max_vertices)?;
-                    parts.push(resolve_contours(&contours, rule));
+                    parts.push(resolve_contours(&contours, fill.rule().into()));
                 }
                 if let Some(stroke) = path.stroke() {
                     *painted = true;
