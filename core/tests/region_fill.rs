@@ -355,7 +355,8 @@ fn fills_look_like_their_exemplars_by_independent_measures() {
         }
         let curvature = histogram_emd(&out.curvature, &ex.curvature, CURVATURE_BIN);
         let orientation = histogram_emd_circular(&out.orientation, &ex.orientation, 180.0 / ORIENTATION_BINS as f64);
-        assert!(curvature < 0.15, "{name}: curvature {curvature:.3} /mm from the exemplar's");
+        // Within 0.05 /mm: the meander's square corners, rounded off, were 0.10.
+        assert!(curvature < 0.05, "{name}: curvature {curvature:.3} /mm from the exemplar's");
         assert!(orientation < 12.0, "{name}: orientation {orientation:.1}° from the exemplar's");
         let (cover, ex_cover) = (coverage(&paths, &region, margin), coverage(&ex_paths, &ex_region, margin));
         assert!(

@@ -27,6 +27,9 @@ const SAME_POINT_MM: f64 = 1e-9;
 /// let parts = clip_polylines(&[(across, false)], &square);
 /// assert_eq!(parts.len(), 1);
 /// assert!((parts[0].0[0].x.min(parts[0].0[1].x) - 0.0).abs() < 1e-9);
+/// // A path wholly inside that turns back along x stays one part.
+/// let hook = vec![DVec2::new(1.5, 0.2), DVec2::new(1.0, 1.0), DVec2::new(1.1, 1.8)];
+/// assert_eq!(clip_polylines(&[(hook, false)], &square).len(), 1);
 /// ```
 pub fn clip_polylines(paths_mm: &[(Vec<DVec2>, bool)], region: &Region) -> Vec<(Vec<DVec2>, bool)> {
     let shape: Vec<Vec<[f64; 2]>> = region.rings().map(|r| r.iter().map(|p| [p.x, p.y]).collect()).collect();
@@ -47,15 +50,62 @@ pub fn clip_polylines(paths_mm: &[(Vec<DVec2>, bool)], region: &Region) -> Vec<(
         if *closed {
             string.push(string[0]);
         }
-        for part in string.clip_by_as::<i64>(&shape, OverlayFill::EvenOdd, rule) {
-            let mut part: Vec<DVec2> = part.into_iter().map(|[x, y]| DVec2::new(x, y)).collect();
-            part.dedup_by(|a, b| a.distance(*b) < SAME_POINT_MM);
-            if part.len() >= 2 {
-                out.push((part, false));
-            }
-        }
+        let parts: Vec<Vec<DVec2>> = string
+            .clip_by_as::<i64>(&shape, OverlayFill::EvenOdd, rule)
+            .into_iter()
+            .map(|part| {
+                let mut part: Vec<DVec2> = part.into_iter().map(|[x, y]| DVec2::new(x, y)).collect();
+                part.dedup_by(|a, b| a.distance(*b) < SAME_POINT_MM);
+                part
+            })
+            .filter(|part| part.len() >= 2)
+            .collect();
+        out.extend(joined_at_shared_ends(parts).into_iter().map(|part| (part, false)));
     }
     out
+}
+
+/// Ends of two parts of one path nearer than this are where the clipping
+/// split it, not where the region cut it, mm: the snapping to integers
+/// moves a point by about 1e-15 mm.
+const SPLIT_POINT_MM: f64 = 1e-6;
+
+/// `parts` of one clipped path, with parts that share an end joined. The
+/// string clipping also splits a path inside the region at some of its
+/// vertices (where it turns back along `x`); left split, the piece's ends
+/// would read as loose ends, and a short piece would go as a stub.
+fn joined_at_shared_ends(mut parts: Vec<Vec<DVec2>>) -> Vec<Vec<DVec2>> {
+    let first_last = |p: &Vec<DVec2>| (p[0], p[p.len() - 1]);
+    'again: loop {
+        for i in 0..parts.len() {
+            for j in i + 1..parts.len() {
+                let ((a0, a1), (b0, b1)) = (first_last(&parts[i]), first_last(&parts[j]));
+                let near = |p: DVec2, q: DVec2| p.distance(q) < SPLIT_POINT_MM;
+                let (reverse_a, reverse_b) = if near(a1, b0) {
+                    (false, false)
+                } else if near(a1, b1) {
+                    (false, true)
+                } else if near(a0, b1) {
+                    (true, true)
+                } else if near(a0, b0) {
+                    (true, false)
+                } else {
+                    continue;
+                };
+                let mut b = parts.swap_remove(j);
+                let a = &mut parts[i];
+                if reverse_a {
+                    a.reverse();
+                }
+                if reverse_b {
+                    b.reverse();
+                }
+                a.extend(b.into_iter().skip(1));
+                continue 'again;
+            }
+        }
+        return parts;
+    }
 }
 
 /// Whether a segment of the loop `points` crosses a ring of `region`.

@@ -8,6 +8,7 @@
 
 mod assignment;
 mod builtin;
+mod corners;
 mod curve_path;
 mod error;
 mod exemplar;
@@ -15,6 +16,7 @@ mod fragments;
 mod joins;
 mod matching;
 mod neighbourhood;
+mod orientation;
 mod pipeline;
 mod reconstruct;
 mod region;
@@ -25,6 +27,7 @@ mod synthesis;
 
 pub use assignment::{MatchedPair, assign_edges, assign_positions, existence_votes};
 pub use builtin::{BUILTIN_CURVES, builtin_curves};
+pub use corners::corner_vertices;
 pub use curve_path::CurvePath;
 pub use error::FillError;
 pub use exemplar::{BAND_MAX_WIDTH_SPACINGS, CurveExemplar, EXEMPLAR_TOLERANCE_MM, FilledShape, MAX_EXEMPLAR_SAMPLES};
@@ -35,13 +38,16 @@ pub use neighbourhood::{
     EDGE_WEIGHT, EdgeVectors, NeighbourhoodPair, SampleGrid, Similarity, edge_difference, edge_vectors,
     neighbourhood_distance, unmatched_cost,
 };
+pub use orientation::{EdgeTangents, THROUGH_TOLERANCE, assign_orientations};
 pub use pipeline::{PREDICTION_ITERATIONS, make_product, make_product_around, predict, print_drawn};
-pub use reconstruct::{CORNER_TURN, SMOOTH_TOLERANCE_MM, smooth_paths};
+pub use reconstruct::{CORNER_TURN, SMOOTH_TOLERANCE_MM, smooth_paths, smooth_paths_oriented};
 pub use region::{MAX_FILL_SAMPLES, REGION_TOLERANCE_MM, check_region, parse_region, region_from_outlines};
-pub use sample_graph::{JOIN_TOLERANCE_MM, MAX_SEGMENTS, Sample, SampleError, SampleGraph, SampleKind};
+pub use sample_graph::{
+    JOIN_TOLERANCE_MM, MAX_SEGMENTS, Sample, SampleError, SampleGraph, SampleKind, TANGENT_REACH_SPACINGS,
+};
 pub use search::{NearestField, Neighbourhoods, SearchSettings, search};
 pub use settings::{InvalidSetting, MAX_EXEMPLAR_SCALE, MAX_ITERATIONS, MIN_DELTA_MM, MIN_EXEMPLAR_SCALE, Settings};
-pub use synthesis::{fill_rectangle, synthesize, synthesize_around};
+pub use synthesis::{Synthesized, fill_rectangle, synthesize, synthesize_around, synthesize_oriented};
 
 /// Levels of the sample hierarchy, coarse to fine.
 pub const LEVELS: usize = 3;

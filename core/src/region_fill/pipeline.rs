@@ -14,8 +14,8 @@ use crate::report::Timings;
 use glam::DVec2;
 
 use super::{
-    CurveExemplar, CurvePath, FillError, FragmentLimits, JOIN_TOLERANCE_MM, SampleGraph, Settings, check_region,
-    join_drawn_ends, smooth_paths, synthesize_around,
+    CurveExemplar, CurvePath, FillError, FragmentLimits, JOIN_TOLERANCE_MM, SampleGraph, Settings, Synthesized,
+    check_region, join_drawn_ends, smooth_paths_oriented, synthesize_oriented,
 };
 
 /// Paths left shorter than this many sample spacings by clipping are
@@ -206,8 +206,8 @@ fn predict_timed(
             .is_some_and(|b| b.max.cmpge(reach.min).all() && b.min.cmple(reach.max).all())
     };
     let drawn: Vec<CurvePath> = drawn.iter().filter(|p| near(p)).cloned().collect();
-    let mut synthesized =
-        timings.time("synthesis", || synthesize_around(&exemplar.paths, &bounds, &drawn, settings, control))?;
+    let Synthesized { paths: mut synthesized, tangents } =
+        timings.time("synthesis", || synthesize_oriented(&exemplar.paths, &bounds, &drawn, settings, control))?;
     if synthesized.is_empty() && drawn.is_empty() {
         return Err(nothing_left(exemplar, &bounds, 1.0, settings));
     }
@@ -223,18 +223,29 @@ fn predict_timed(
         // Ends near the edge go on past it, and ends on a drawn path join it: neither is loose.
         let on_drawn = |p: DVec2| drawn.iter().any(|d| d.distance_to(p) <= JOIN_TOLERANCE_MM);
         let anchored = |p: DVec2| !(p.cmpgt(inner.min).all() && p.cmplt(inner.max).all()) || on_drawn(p);
-        Ok::<_, FillError>(smooth_paths(&limits.remove_from(synthesized, anchored)))
+        Ok::<_, FillError>(smooth_paths_oriented(&limits.remove_from(synthesized, anchored), &tangents))
     })?;
     Ok(timings.time("clip", || clip_paths(&smooth, region, MIN_CLIPPED_SPACINGS * settings.delta_mm)))
 }
 
-/// The parts of `paths` inside `region`, less stubs shorter than `min_mm`.
+/// The parts of `paths` inside `region`, less stubs shorter than `min_mm`:
+/// bits the region's edge cut off, and short spurs. A short path that
+/// joins others at both ends (an arm between two junctions) stays:
+/// dropping it would leave its neighbours' ends loose.
 fn clip_paths(paths: &[CurvePath], region: &Region, min_mm: f64) -> Vec<CurvePath> {
     let polylines: Vec<_> = paths.iter().map(|p| (p.points_mm.clone(), p.closed)).collect();
+    let key = |p: DVec2| ((p.x * 1e6).round() as i64, (p.y * 1e6).round() as i64);
+    let mut ends_at: rustc_hash::FxHashMap<(i64, i64), usize> = Default::default();
+    for end in paths.iter().filter_map(CurvePath::free_ends).flatten() {
+        *ends_at.entry(key(end)).or_default() += 1;
+    }
+    let joined_at_both = |p: &CurvePath| {
+        p.free_ends().is_some_and(|ends| ends.iter().all(|&e| ends_at.get(&key(e)).is_some_and(|&n| n >= 2)))
+    };
     clip_polylines(&polylines, region)
         .into_iter()
         .map(|(points_mm, closed)| CurvePath { points_mm, closed })
-        .filter(|p| p.length_mm() >= min_mm)
+        .filter(|p| p.length_mm() >= min_mm || joined_at_both(p))
         .collect()
 }
 

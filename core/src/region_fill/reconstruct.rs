@@ -9,7 +9,7 @@
 use glam::DVec2;
 use lyon::geom::{CubicBezierSegment, LineSegment, point};
 
-use super::CurvePath;
+use super::{CurvePath, EdgeTangents};
 
 /// Largest distance between a smoothed curve and the polyline it is drawn
 /// with, mm: below what a pen or a nozzle shows.
@@ -33,10 +33,21 @@ pub const CORNER_TURN: f64 = 1.0;
 /// assert!(worst < 0.005, "{worst}");
 /// ```
 pub fn smooth_paths(paths: &[CurvePath]) -> Vec<CurvePath> {
-    paths.iter().map(smooth).collect()
+    smooth_paths_oriented(paths, &EdgeTangents::default())
 }
 
-fn smooth(path: &CurvePath) -> CurvePath {
+/// As [`smooth_paths`], the curve leaving each sample in the direction the
+/// synthesis assigned it ([`EdgeTangents::leaving`]) where it assigned
+/// one: through a sample whose orientations are opposite, smoothly, even
+/// where the samples turn sharply (a spiral's tight centre); at one whose
+/// orientations are not, on a corner, even where the turn is slight; and
+/// through a junction along the branch that continues the path. The
+/// spline's reach along each direction is the Catmull–Rom one.
+pub fn smooth_paths_oriented(paths: &[CurvePath], tangents: &EdgeTangents) -> Vec<CurvePath> {
+    paths.iter().map(|p| smooth(p, tangents)).collect()
+}
+
+fn smooth(path: &CurvePath, tangents: &EdgeTangents) -> CurvePath {
     let p = &path.points_mm;
     let n = p.len();
     if n < 3 {
@@ -69,6 +80,8 @@ fn smooth(path: &CurvePath) -> CurvePath {
         let a = if corner(i) { 2.0 * b - c } else { at(i - 1).unwrap_or(2.0 * b - c) };
         let d = if corner(i + 1) { 2.0 * c - b } else { at(i + 2).unwrap_or(2.0 * c - b) };
         let (c1, c2) = catmull_rom_controls(a, b, c, d);
+        let c1 = tangents.leaving(at(i - 1), b, c).map_or(c1, |dir| b + dir * c1.distance(b));
+        let c2 = tangents.leaving(at(i + 2), c, b).map_or(c2, |dir| c + dir * c2.distance(c));
         let to = |q: DVec2| point(q.x, q.y);
         let segment = CubicBezierSegment { from: to(b), ctrl1: to(c1), ctrl2: to(c2), to: to(c) };
         segment.for_each_flattened(SMOOTH_TOLERANCE_MM, &mut |l: &LineSegment<f64>| {

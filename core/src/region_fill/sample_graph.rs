@@ -6,7 +6,7 @@
 use glam::DVec2;
 use smallvec::SmallVec;
 
-use super::CurvePath;
+use super::{CORNER_TURN, CurvePath};
 use crate::curve::Curve;
 use crate::disjoint_sets::DisjointSets;
 use crate::geom::closest_on_segment;
@@ -41,6 +41,15 @@ pub struct SampleGraph {
     pub samples: Vec<Sample>,
     /// Each sample's neighbours along the paths.
     pub neighbours: Vec<SmallVec<[u32; 4]>>,
+}
+
+/// The share of a sample spacing over which a path's tangent is read at a
+/// sample (and over which a turn counts as a corner).
+pub const TANGENT_REACH_SPACINGS: f64 = 0.25;
+
+/// The angle of `v` in `[0, 2π)`.
+fn angle_of(v: DVec2) -> f64 {
+    v.y.atan2(v.x).rem_euclid(std::f64::consts::TAU)
 }
 
 /// Points closer than this are one point when paths are cut where they
@@ -92,6 +101,27 @@ impl SampleGraph {
     /// assert_eq!(graph.samples.len(), 21);
     /// ```
     pub fn new(paths: &[CurvePath], delta_mm: f64) -> Result<SampleGraph, SampleError> {
+        let reach = TANGENT_REACH_SPACINGS * delta_mm;
+        SampleGraph::sampled(paths, delta_mm, &|path: &CurvePath| super::corner_vertices(path, reach, CORNER_TURN))
+    }
+
+    /// As [`SampleGraph::new`], without cutting paths at their corners: for
+    /// a synthesized pattern sampled again at the next level, whose sharp
+    /// turns are mostly the coarse level's chords rather than corners
+    /// drawn. (Cutting there too, by the turn or by the coarse level's
+    /// orientations, changed the synthesis of the built-ins without
+    /// corners and left the scales and spirals with gaps; see
+    /// `docs/region-fill.md`.)
+    pub fn new_without_corners(paths: &[CurvePath], delta_mm: f64) -> Result<SampleGraph, SampleError> {
+        SampleGraph::sampled(paths, delta_mm, &|_: &CurvePath| Vec::new())
+    }
+
+    /// Samples `paths`, cutting each at the vertices `corners` finds.
+    fn sampled(
+        paths: &[CurvePath],
+        delta_mm: f64,
+        corners: &dyn Fn(&CurvePath) -> Vec<usize>,
+    ) -> Result<SampleGraph, SampleError> {
         if !(delta_mm.is_finite() && delta_mm > 0.0) {
             return Err(SampleError::Spacing(delta_mm));
         }
@@ -100,7 +130,7 @@ impl SampleGraph {
         if segments > MAX_SEGMENTS {
             return Err(SampleError::TooLarge { segments, limit: MAX_SEGMENTS });
         }
-        let (cuts, points) = find_cuts(&paths);
+        let (cuts, points) = find_cuts(&paths, corners);
         let mut graph = SampleGraph::default();
         // Junction points become samples first, shared by every path through them.
         let mut point_sample = vec![u32::MAX; points.len()];
@@ -199,15 +229,52 @@ impl SampleGraph {
 
     /// Joins `a` and `b`, recording at each the direction toward the other.
     pub fn connect(&mut self, a: u32, b: u32) {
+        let d = self.samples[b as usize].position_mm - self.samples[a as usize].position_mm;
+        self.connect_oriented(a, b, angle_of(d), angle_of(-d));
+    }
+
+    /// Joins `a` and `b`, the path leaving `a` toward `b` at angle `at_a`
+    /// and leaving `b` toward `a` at `at_b` (radians): the tangents of a
+    /// curved path rather than the chord between its samples.
+    pub fn connect_oriented(&mut self, a: u32, b: u32, at_a: f64, at_b: f64) {
         if a == b || self.neighbours[a as usize].contains(&b) {
             return;
         }
-        let d = self.samples[b as usize].position_mm - self.samples[a as usize].position_mm;
-        let angle = |v: DVec2| v.y.atan2(v.x).rem_euclid(std::f64::consts::TAU);
-        self.samples[a as usize].orientations.push(angle(d));
-        self.samples[b as usize].orientations.push(angle(-d));
+        self.samples[a as usize].orientations.push(at_a.rem_euclid(std::f64::consts::TAU));
+        self.samples[b as usize].orientations.push(at_b.rem_euclid(std::f64::consts::TAU));
         self.neighbours[a as usize].push(b);
         self.neighbours[b as usize].push(a);
+    }
+
+    /// The direction of the path leaving `s` along its edge to `n`,
+    /// radians; `None` when they are not joined.
+    ///
+    /// ```
+    /// use tracery_core::DVec2;
+    /// use tracery_core::region_fill::SampleGraph;
+    /// let mut g = SampleGraph::default();
+    /// let (a, b) = (g.add_sample(DVec2::ZERO), g.add_sample(DVec2::Y));
+    /// g.connect(a, b);
+    /// assert!((g.orientation_toward(a, b).unwrap() - std::f64::consts::FRAC_PI_2).abs() < 1e-12);
+    /// assert_eq!(g.orientation_toward(a, a), None);
+    /// ```
+    pub fn orientation_toward(&self, s: u32, n: u32) -> Option<f64> {
+        let k = self.neighbours[s as usize].iter().position(|&x| x == n)?;
+        self.samples[s as usize].orientations.get(k).copied()
+    }
+
+    /// Every edge once (smaller index first), with its orientation at each end.
+    fn oriented_edges(&self) -> Vec<(u32, u32, f64, f64)> {
+        let mut out = Vec::new();
+        for (s, around) in self.neighbours.iter().enumerate() {
+            for (k, &n) in around.iter().enumerate() {
+                if (n as usize) > s {
+                    let at_n = self.orientation_toward(n, s as u32).unwrap_or(0.0);
+                    out.push((s as u32, n, self.samples[s].orientations[k], at_n));
+                }
+            }
+        }
+        out
     }
 
     /// The edges between two of the samples `0..count`, each once.
@@ -221,14 +288,14 @@ impl SampleGraph {
 
     /// Removes the edges between two of the samples `0..count`.
     pub fn disconnect_among(&mut self, count: usize) {
-        let edges = self.edges();
+        let edges = self.oriented_edges();
         self.neighbours = vec![SmallVec::new(); self.samples.len()];
         for sample in &mut self.samples {
             sample.orientations.clear();
         }
-        for [a, b] in edges {
+        for (a, b, at_a, at_b) in edges {
             if (a as usize) >= count || (b as usize) >= count {
-                self.connect(a, b);
+                self.connect_oriented(a, b, at_a, at_b);
             }
         }
     }
@@ -248,8 +315,8 @@ impl SampleGraph {
         for &s in &order {
             graph.add_sample(self.samples[s].position_mm);
         }
-        for [a, b] in self.edges() {
-            graph.connect(new_index[a as usize], new_index[b as usize]);
+        for (a, b, at_a, at_b) in self.oriented_edges() {
+            graph.connect_oriented(new_index[a as usize], new_index[b as usize], at_a, at_b);
         }
         (graph, first.iter().filter(|&&f| f).count())
     }
@@ -264,7 +331,8 @@ impl SampleGraph {
                 next += 1;
             }
         }
-        let old_neighbours = std::mem::take(&mut self.neighbours);
+        let edges = self.oriented_edges();
+        self.neighbours.clear();
         let old_samples = std::mem::take(&mut self.samples);
         for (s, sample) in old_samples.into_iter().enumerate() {
             if keep[s] {
@@ -272,12 +340,10 @@ impl SampleGraph {
                 self.neighbours.push(SmallVec::new());
             }
         }
-        for (s, around) in old_neighbours.iter().enumerate() {
-            for &n in around {
-                let (a, b) = (new_index[s], new_index[n as usize]);
-                if a != u32::MAX && b != u32::MAX && a < b {
-                    self.connect(a, b);
-                }
+        for (s, n, at_s, at_n) in edges {
+            let (a, b) = (new_index[s as usize], new_index[n as usize]);
+            if a != u32::MAX && b != u32::MAX {
+                self.connect_oriented(a, b, at_s, at_n);
             }
         }
     }
@@ -337,21 +403,37 @@ impl SampleGraph {
         let intervals = ((to - from) / delta_mm).ceil().max(1.0) as usize;
         // A loop through one point needs at least three samples to be a loop.
         let intervals = if a == b { intervals.max(3) } else { intervals };
-        let mut previous = a;
-        for k in 1..intervals {
-            let s = from + (to - from) * k as f64 / intervals as f64;
-            let next = self.add_sample(curve.point(s));
-            self.connect(previous, next);
-            previous = next;
+        let step = (to - from) / intervals as f64;
+        // Within a stretch the path runs smoothly through each sample: its
+        // tangent is read across it, the same both ways. At the stretch's
+        // ends (a junction, a corner, an end) it is read on the stretch's
+        // side only, over a quarter spacing, so a corner stays a corner;
+        // a loop touching nothing has no such end.
+        let reach = (TANGENT_REACH_SPACINGS * delta_mm).min(0.5 * step);
+        let smooth_ends = a == b && to - from >= curve.length() && curve.is_closed();
+        let forward_at = |s: f64, end: bool| {
+            let (back, ahead) = (if end { curve.point(s) } else { curve.point(s - reach) }, curve.point(s + reach));
+            angle_of(ahead - back)
+        };
+        let backward_at = |s: f64, end: bool| {
+            let (back, ahead) = (curve.point(s - reach), if end { curve.point(s) } else { curve.point(s + reach) });
+            angle_of(back - ahead)
+        };
+        let (mut previous, mut at) = (a, from);
+        for k in 1..=intervals {
+            let s = if k == intervals { to } else { from + (to - from) * k as f64 / intervals as f64 };
+            let next = if k == intervals { b } else { self.add_sample(curve.point(s)) };
+            let (start_is_end, stop_is_end) = (k == 1 && !smooth_ends, k == intervals && !smooth_ends);
+            self.connect_oriented(previous, next, forward_at(at, start_is_end), backward_at(s, stop_is_end));
+            (previous, at) = (next, s);
         }
-        self.connect(previous, b);
     }
 }
 
 /// Where paths must be cut: their ends, where they cross, and where an end
 /// touches another path; all such points merged within
 /// [`JOIN_TOLERANCE_MM`]. Returns the cuts per path and the points.
-fn find_cuts(paths: &[&CurvePath]) -> (Vec<Vec<Cut>>, Vec<DVec2>) {
+fn find_cuts(paths: &[&CurvePath], corners: &dyn Fn(&CurvePath) -> Vec<usize>) -> (Vec<Vec<Cut>>, Vec<DVec2>) {
     let mut raw: Vec<(usize, Cut, DVec2)> = Vec::new();
     for (p, path) in paths.iter().enumerate() {
         if !path.closed {
@@ -393,6 +475,13 @@ fn find_cuts(paths: &[&CurvePath]) -> (Vec<Vec<Cut>>, Vec<DVec2>) {
             if at.distance(end) <= JOIN_TOLERANCE_MM {
                 raw.push((p, Cut { segment: i, t, point: 0 }, at));
             }
+        }
+    }
+    // Corners are cut too, so a sample keeps each (after the T-junctions:
+    // a corner is no end to touch another path).
+    for (p, path) in paths.iter().enumerate() {
+        for j in corners(path) {
+            raw.push((p, Cut { segment: j, t: 0.0, point: 0 }, path.points_mm[j]));
         }
     }
     // Merge points within the tolerance (pairwise on a grid of cells the tolerance wide).

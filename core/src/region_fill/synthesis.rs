@@ -12,8 +12,8 @@ use crate::random::SplitMix64;
 
 use super::assignment::{MatchedPair, assign_edges, assign_positions, existence_votes, missing_samples};
 use super::{
-    CurvePath, FillError, JOIN_TOLERANCE_MM, LEVELS, NearestField, NeighbourhoodPair, Neighbourhoods, SampleGraph,
-    SampleGrid, SearchSettings, Settings, Similarity, search,
+    CurvePath, EdgeTangents, FillError, JOIN_TOLERANCE_MM, LEVELS, NearestField, NeighbourhoodPair, Neighbourhoods,
+    SampleGraph, SampleGrid, SearchSettings, Settings, Similarity, assign_orientations, search,
 };
 
 /// Patches (section 4.3.2): the rectangle `size_mm` is tiled with squares
@@ -124,6 +124,27 @@ pub fn synthesize_around(
     settings: &Settings,
     control: &Control,
 ) -> Result<Vec<CurvePath>, FillError> {
+    Ok(synthesize_oriented(exemplar, bounds, fixed, settings, control)?.paths)
+}
+
+/// What the synthesis made: its paths, and the orientations of the final
+/// graph's edges that reconstruction follows.
+#[derive(Clone, Debug, Default)]
+pub struct Synthesized {
+    /// The new paths, cut where they meet, mm.
+    pub paths: Vec<CurvePath>,
+    /// The orientations the final step assigned, by the samples' places.
+    pub tangents: EdgeTangents,
+}
+
+/// As [`synthesize_around`], with the orientations of the final graph.
+pub fn synthesize_oriented(
+    exemplar: &[CurvePath],
+    bounds: &Rect,
+    fixed: &[CurvePath],
+    settings: &Settings,
+    control: &Control,
+) -> Result<Synthesized, FillError> {
     let size = bounds.size();
     let offset = bounds.min;
     let fixed: Vec<CurvePath> = fixed
@@ -132,6 +153,7 @@ pub fn synthesize_around(
         .collect();
     let mut rng = SplitMix64::new(settings.seed);
     let mut paths: Option<Vec<CurvePath>> = None;
+    let mut tangents = EdgeTangents::default();
     let steps = (LEVELS * settings.iterations) as f32;
     for level in 0..LEVELS {
         let delta = settings.delta_mm * 2f64.powi((LEVELS - 1 - level) as i32);
@@ -146,7 +168,7 @@ pub fn synthesize_around(
             }
             Some(p) => {
                 let all: Vec<CurvePath> = p.iter().chain(&fixed).cloned().collect();
-                let graph = SampleGraph::new(&all, delta)?;
+                let graph = SampleGraph::new_without_corners(&all, delta)?;
                 let on_fixed = on_paths(&graph, &fixed, JOIN_TOLERANCE_MM);
                 let (graph, pinned) = graph.pinned_first(&on_fixed);
                 (graph, None, pinned)
@@ -167,12 +189,16 @@ pub fn synthesize_around(
         // paths (and their edges onto what was drawn) are carried.
         output.disconnect_among(pinned);
         paths = Some(output.to_paths());
+        if level + 1 == LEVELS {
+            tangents = EdgeTangents::of(&output, offset);
+        }
     }
-    Ok(paths
+    let paths = paths
         .unwrap_or_default()
         .into_iter()
         .map(|p| CurvePath { points_mm: p.points_mm.iter().map(|q| *q + offset).collect(), ..p })
-        .collect())
+        .collect();
+    Ok(Synthesized { paths, tangents })
 }
 
 /// Which samples of `graph` lie within `tolerance_mm` of one of `paths`.
@@ -255,6 +281,10 @@ fn synthesize_level(
         let inside = |p: DVec2| p.cmpge(DVec2::ZERO).all() && p.cmple(size_mm).all();
         let added = missing_samples(&output, input, &pairs, delta_mm, radius_mm, &inside);
         assign_edges(&mut output, input, &pairs, level.pinned);
+        // Orientations only shape the reconstruction, which follows the last step.
+        if step + 1 == level.iterations {
+            assign_orientations(&mut output, input, &pairs);
+        }
         // Existence: samples matched in fewer than half the neighbourhoods
         // holding them go, with their place in the field.
         let keep: Vec<bool> = existence_votes(output.samples.len(), &pairs)
