@@ -19,14 +19,17 @@ pub struct FragmentLimits {
     pub min_loose_mm: f64,
 }
 
+/// A point as a key, to the nanometre.
+pub(super) type Place = (i64, i64);
+
 /// Points are one endpoint when they round to the same nanometre: paths
 /// from one graph share their junction samples exactly.
-fn key(p: DVec2) -> (i64, i64) {
+pub(super) fn key(p: DVec2) -> Place {
     ((p.x * 1e6).round() as i64, (p.y * 1e6).round() as i64)
 }
 
 /// How many path ends meet at each endpoint.
-fn degrees(paths: &[CurvePath]) -> FxHashMap<(i64, i64), usize> {
+pub(super) fn degrees(paths: &[CurvePath]) -> FxHashMap<Place, usize> {
     let mut degree: FxHashMap<(i64, i64), usize> = FxHashMap::default();
     for p in paths.iter().filter(|p| !p.closed && p.points_mm.len() >= 2) {
         *degree.entry(key(p.points_mm[0])).or_default() += 1;

@@ -23,6 +23,8 @@ use smallvec::SmallVec;
 
 use super::SampleGraph;
 use super::assignment::MatchedPair;
+use super::fragments::{Place, key};
+use super::sample_graph::angle_of;
 
 /// Two orientations at a sample within this angle of opposite run
 /// through it: the paper's `8π/9 .. 10π/9`.
@@ -56,22 +58,13 @@ pub fn assign_orientations(output: &mut SampleGraph, input: &SampleGraph, pairs:
             let c = chord(output, s as u32, n);
             let v = votes[s][e];
             let turn = if v.length_squared() > 0.0 { v.y.atan2(v.x) } else { 0.0 };
-            output.samples[s].orientations[e] = (c.y.atan2(c.x) + turn).rem_euclid(std::f64::consts::TAU);
+            output.samples[s].orientations[e] = (angle_of(c) + turn).rem_euclid(std::f64::consts::TAU);
         }
     }
 }
 
-/// A sample's place, as [`key`] gives it.
-type Place = (i64, i64);
-
-/// A point's key: its coordinates to the nanometre. Paths taken from one
-/// graph share their samples' coordinates exactly.
-fn key(p: DVec2) -> Place {
-    ((p.x * 1e6).round() as i64, (p.y * 1e6).round() as i64)
-}
-
 /// The orientations of a synthesized graph, found by the positions of the
-/// samples, for reconstruction after its paths have been cleaned up.
+/// samples (to the nanometre, as fragment removal finds paths' ends), for reconstruction after its paths have been cleaned up.
 #[derive(Clone, Debug, Default)]
 pub struct EdgeTangents {
     /// Each sample's neighbours, with the direction leaving toward each.

@@ -13,6 +13,7 @@ use crate::report::Timings;
 
 use glam::DVec2;
 
+use super::fragments::{degrees, key};
 use super::{
     CurveExemplar, CurvePath, FillError, FragmentLimits, JOIN_TOLERANCE_MM, SampleGraph, Settings, Synthesized,
     check_region, join_drawn_ends, smooth_paths_oriented, synthesize_oriented,
@@ -234,11 +235,7 @@ fn predict_timed(
 /// dropping it would leave its neighbours' ends loose.
 fn clip_paths(paths: &[CurvePath], region: &Region, min_mm: f64) -> Vec<CurvePath> {
     let polylines: Vec<_> = paths.iter().map(|p| (p.points_mm.clone(), p.closed)).collect();
-    let key = |p: DVec2| ((p.x * 1e6).round() as i64, (p.y * 1e6).round() as i64);
-    let mut ends_at: rustc_hash::FxHashMap<(i64, i64), usize> = Default::default();
-    for end in paths.iter().filter_map(CurvePath::free_ends).flatten() {
-        *ends_at.entry(key(end)).or_default() += 1;
-    }
+    let ends_at = degrees(paths);
     let joined_at_both = |p: &CurvePath| {
         p.free_ends().is_some_and(|ends| ends.iter().all(|&e| ends_at.get(&key(e)).is_some_and(|&n| n >= 2)))
     };

@@ -48,7 +48,7 @@ pub struct SampleGraph {
 pub const TANGENT_REACH_SPACINGS: f64 = 0.25;
 
 /// The angle of `v` in `[0, 2π)`.
-fn angle_of(v: DVec2) -> f64 {
+pub(super) fn angle_of(v: DVec2) -> f64 {
     v.y.atan2(v.x).rem_euclid(std::f64::consts::TAU)
 }
 

@@ -183,6 +183,7 @@ pub fn synthesize_oriented(
             control,
             done: (level * settings.iterations) as f32,
             steps,
+            last: level + 1 == LEVELS,
         };
         let mut output = synthesize_level(&input, output, start, &at, &mut rng)?;
         // What was drawn is added back whole at the next level: only the new
@@ -231,6 +232,8 @@ struct Level<'a, 'c> {
     done: f32,
     /// Steps in the whole synthesis.
     steps: f32,
+    /// Whether this is the finest level, whose orientations reconstruction reads.
+    last: bool,
 }
 
 /// Search and assignment steps at one level.
@@ -281,8 +284,10 @@ fn synthesize_level(
         let inside = |p: DVec2| p.cmpge(DVec2::ZERO).all() && p.cmple(size_mm).all();
         let added = missing_samples(&output, input, &pairs, delta_mm, radius_mm, &inside);
         assign_edges(&mut output, input, &pairs, level.pinned);
-        // Orientations only shape the reconstruction, which follows the last step.
-        if step + 1 == level.iterations {
+        // Orientations only shape the reconstruction, which follows the
+        // last step of the finest level; coarser levels' graphs are
+        // sampled again from their paths, which keep none.
+        if level.last && step + 1 == level.iterations {
             assign_orientations(&mut output, input, &pairs);
         }
         // Existence: samples matched in fewer than half the neighbourhoods
