@@ -82,6 +82,28 @@ fn a_drawn_region_with_a_hole_and_a_frame_prints_as_one_piece() {
 }
 
 #[test]
+fn berries_print_their_elements_whole_and_draw_them_filled() {
+    let dir = tempdir("fill-berries");
+    let (stl, svg) = (dir.join("b.stl"), dir.join("b.svg"));
+    let json = report_of(
+        "fill",
+        &["--exemplar", "berries", "--region", "rect:50x35", "--stl", &path(&stl), "--svg", &path(&svg)],
+        &dir.join("b.json"),
+    );
+    let elements: usize = field(&json, "elements").parse().unwrap();
+    // The exemplar has 20 in 40 x 40 mm; 50 x 35 mm less its edge holds more than 10.
+    assert!(elements >= 10, "{json}");
+    let check = check_stl(&stl);
+    assert_eq!((check.open_edges, check.misoriented_edges), (0, 0), "{check:?}");
+    assert_eq!(check.shells.to_string(), field(&json, "components"), "{json}");
+    // The SVG strokes the paths and fills the elements, one path each.
+    let text = std::fs::read_to_string(&svg).unwrap();
+    let (strokes, filled) = text.split_once(r#"<g id="elements""#).expect("an elements group");
+    assert_eq!(filled.matches("<path").count(), elements);
+    assert!(strokes.matches("<path").count() >= 10 && strokes.contains(r#"fill="none""#));
+}
+
+#[test]
 fn bad_input_fails_with_one_line_and_no_file() {
     let dir = tempdir("fill-bad");
     let bow_tie = dir.join("bow.svg");

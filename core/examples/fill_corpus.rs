@@ -3,9 +3,9 @@
 //! lines of those drawn as thin bands), scaled so its
 //! larger side is `--size` mm like the built-ins, and filled into a
 //! 60 × 40 mm rectangle with a time limit. Prints one line per ornament and
-//! a summary (outcomes, times, crossings and coverage measured on the
-//! output alone by `tracery_core::quality`), and draws a contact sheet with
-//! its index beside it.
+//! a summary (outcomes, times, crossings, coverage and discrete elements
+//! measured on the output alone by `tracery_core::quality`), and draws a
+//! contact sheet with its index beside it.
 //!
 //! `cargo run -p tracery-core --release --example fill_corpus -- [DIR] [--size MM] [--limit-s S] [--sheet OUT.png]`
 //! (defaults: `../shared/corpus/ornaments`, 40 mm, 20 s, `docs/fill-corpus.png`
@@ -18,8 +18,8 @@ use std::time::{Duration, Instant};
 
 use tiny_skia::{Color, Paint, Pixmap};
 use tracery_core::control::Control;
-use tracery_core::geom::{Rect, Region};
-use tracery_core::quality::{coverage, curve_statistics_within};
+use tracery_core::geom::{Polygon, Rect, Region};
+use tracery_core::quality::{coverage, curve_statistics_within, element_statistics};
 use tracery_core::region_fill::{CurveExemplar, FillError, Settings, make_product, parse_region};
 
 #[path = "common/sheet.rs"]
@@ -32,9 +32,26 @@ const COLUMNS: usize = 12;
 /// The region, mm.
 const REGION: (f64, f64) = (60.0, 40.0);
 
+/// The discrete elements of a fill and of its exemplar.
+#[derive(Default)]
+struct ElementsSeen {
+    /// The fill's element shapes, mm.
+    shapes: Vec<Polygon>,
+    /// Elements per 100 mm², the fill's over the exemplar's (`None` when the exemplar has none).
+    density_ratio: Option<f64>,
+    /// Overlapping pairs in the fill, and in the exemplar.
+    overlapping: (usize, usize),
+}
+
 /// What became of one ornament.
 enum Outcome {
-    Filled { ms: f64, paths: Vec<(Vec<tracery_core::DVec2>, bool)>, crossings_ok: bool, cover_ratio: f64 },
+    Filled {
+        ms: f64,
+        paths: Vec<(Vec<tracery_core::DVec2>, bool)>,
+        crossings_ok: bool,
+        cover_ratio: f64,
+        elements: ElementsSeen,
+    },
     Refused(String),
     TimedOut,
 }
@@ -65,9 +82,11 @@ fn main() {
             Ok(exemplar) => fill(&exemplar, &region, &bounds, size_mm, limit),
         };
         match &outcome {
-            Outcome::Filled { ms, paths, crossings_ok, cover_ratio } => eprintln!(
-                "{name}: {} paths in {ms:.0} ms, coverage {cover_ratio:.2} of the exemplar's{}",
+            Outcome::Filled { ms, paths, crossings_ok, cover_ratio, elements } => eprintln!(
+                "{name}: {} paths and {} elements in {ms:.0} ms, coverage {cover_ratio:.2} of the exemplar's{}{}",
                 paths.len(),
+                elements.shapes.len(),
+                elements.density_ratio.map_or(String::new(), |r| format!(", element density {r:.2} of the exemplar's")),
                 if *crossings_ok { "" } else { ", crosses where the exemplar does not" }
             ),
             Outcome::Refused(e) => eprintln!("{name}: refused: {e}"),
@@ -117,8 +136,34 @@ fn fill(exemplar: &CurveExemplar, region: &Region, bounds: &Rect, size_mm: f64, 
             let out = curve_statistics_within(&paths, bounds, margin);
             let crossings_ok = ex.crossings_per_100mm > 0.0 || out.crossings_per_100mm == 0.0;
             let cover_ratio = coverage(&paths, region, margin) / ex_cover.max(1e-9);
-            Outcome::Filled { ms, paths, crossings_ok, cover_ratio }
+            let elements = elements_seen(&scaled, &product.filled_mm.polygons, &paths, bounds, margin);
+            Outcome::Filled { ms, paths, crossings_ok, cover_ratio, elements }
         }
+    }
+}
+
+/// The fill's elements measured against the exemplar's, each within its
+/// own bounds less `margin` (the exemplar's whole when it is smaller).
+fn elements_seen(
+    learned: &CurveExemplar,
+    shapes: &[Polygon],
+    paths: &[(Vec<tracery_core::DVec2>, bool)],
+    bounds: &Rect,
+    margin: f64,
+) -> ElementsSeen {
+    let ex_shapes = learned.elements.polygons();
+    let ex_paths: Vec<_> = learned.paths.iter().map(|p| (p.points_mm.clone(), p.closed)).collect();
+    let out = element_statistics(shapes, paths, bounds, margin);
+    let Some(ex_box) = Rect::from_points(
+        ex_paths.iter().flat_map(|p| p.0.iter().copied()).chain(ex_shapes.iter().flat_map(|s| s.outer.iter().copied())),
+    ) else {
+        return ElementsSeen { shapes: shapes.to_vec(), ..Default::default() };
+    };
+    let ex = element_statistics(&ex_shapes, &ex_paths, &ex_box, 0.0);
+    ElementsSeen {
+        shapes: shapes.to_vec(),
+        density_ratio: (ex.count > 0).then(|| out.per_100mm2 / ex.per_100mm2),
+        overlapping: (out.overlapping_pairs, ex.overlapping_pairs),
     }
 }
 
@@ -153,6 +198,32 @@ fn summarize(outcomes: &[(String, Outcome)], size_mm: f64, limit: Duration) {
         cover_at(0.5),
         cover_at(0.95)
     );
+    let mut densities: Vec<f64> = outcomes
+        .iter()
+        .filter_map(|(_, o)| match o {
+            Outcome::Filled { elements, .. } => elements.density_ratio,
+            _ => None,
+        })
+        .collect();
+    densities.sort_by(f64::total_cmp);
+    let density_at = |q: f64| densities.get(((densities.len() as f64 - 1.0) * q).round() as usize).copied();
+    let overlapping: Vec<&str> = outcomes
+        .iter()
+        .filter_map(|(n, o)| match o {
+            Outcome::Filled { elements, .. } if elements.overlapping.0 > 0 && elements.overlapping.1 == 0 => {
+                Some(n.as_str())
+            }
+            _ => None,
+        })
+        .collect();
+    println!(
+        "with elements: {}; their density against the exemplar's: p5 {:.2}, median {:.2}, p95 {:.2}; overlapping where the exemplar's never do: {} {overlapping:?}",
+        densities.len(),
+        density_at(0.05).unwrap_or(0.0),
+        density_at(0.5).unwrap_or(0.0),
+        density_at(0.95).unwrap_or(0.0),
+        overlapping.len()
+    );
     let crossing: Vec<_> = filled.iter().filter(|f| !f.2).map(|f| f.0.as_str()).collect();
     println!("crossing where the exemplar never does: {} {:?}", crossing.len(), crossing);
     let mut reasons: std::collections::BTreeMap<String, usize> = Default::default();
@@ -180,8 +251,13 @@ fn draw_sheet(outcomes: &[(String, Outcome)], path: &str) {
         let (ox, oy) = (column as f32 * tile_w + 2.0 * SCALE, row as f32 * tile_h + 2.0 * SCALE);
         let mut ink = Paint { anti_alias: true, ..Default::default() };
         let paths = match outcome {
-            Outcome::Filled { paths, .. } => {
+            Outcome::Filled { paths, elements, .. } => {
                 ink.set_color_rgba8(20, 20, 20, 255);
+                let at = |p: &tracery_core::DVec2| (ox + p.x as f32 * SCALE, oy + (REGION.1 - p.y) as f32 * SCALE);
+                for shape in &elements.shapes {
+                    let rings: Vec<Vec<(f32, f32)>> = shape.rings().map(|r| r.iter().map(at).collect()).collect();
+                    sheet::fill_rings(&mut sheet, &rings, &ink);
+                }
                 paths.clone()
             }
             // A red cross where there is no fill.

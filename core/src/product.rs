@@ -165,6 +165,9 @@ pub struct Product {
     pub fill_mm: Vec<[DVec2; 3]>,
     /// Stroked paths, mm.
     pub paths_mm: Vec<StrokedPath>,
+    /// Shapes drawn filled beside the stroked paths (a fill's discrete
+    /// elements), mm; also in `region_mm` when it is filled.
+    pub filled_mm: Region,
     /// A printable solid, mm, `z` up.
     pub mesh_mm: Option<Mesh>,
     /// A picture laid in the plane.

@@ -142,7 +142,9 @@ fn crossings_and_touching_ends_are_junctions() {
 #[test]
 fn coarser_levels_keep_every_end_and_junction() {
     for name in BUILTIN_CURVES {
-        let levels = hierarchy(&builtin_curves(name).unwrap(), 1.0).unwrap();
+        // The curves the fill learns: small filled shapes are elements, not paths.
+        let learned = CurveExemplar::builtin(name).unwrap().curves(1.0);
+        let levels = hierarchy(&learned.paths, 1.0).unwrap();
         let special = |g: &SampleGraph| (0..g.samples.len()).filter(|&s| g.kind(s) != SampleKind::Path).count();
         assert_eq!(special(&levels[0]), special(&levels[2]), "{name}");
         assert!(levels[0].samples.len() * 2 < levels[2].samples.len(), "{name}");
@@ -335,7 +337,10 @@ fn fills_look_like_their_exemplars_by_independent_measures() {
     let bounds = region.bounds().unwrap();
     for name in BUILTIN_CURVES {
         let exemplar = CurveExemplar::builtin(name).unwrap();
-        let ex_paths: Vec<_> = exemplar.paths.iter().map(|p| (p.points_mm.clone(), p.closed)).collect();
+        // Measured on what the fill learns as curves: the outlines of
+        // elements (the berries) are drawn filled, not stroked.
+        let learned = exemplar.curves(settings.delta_mm);
+        let ex_paths: Vec<_> = learned.paths.iter().map(|p| (p.points_mm.clone(), p.closed)).collect();
         let ex_bounds = Rect::from_points(ex_paths.iter().flat_map(|p| p.0.iter().copied())).unwrap();
         let ex = curve_statistics_within(&ex_paths, &ex_bounds, margin);
         let ex_region = Region::rectangle(&ex_bounds);

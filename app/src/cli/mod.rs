@@ -115,7 +115,11 @@ fn list_curves() -> Result<()> {
         let exemplar = tracery_core::region_fill::CurveExemplar::builtin(name)
             .with_context(|| format!("drawing built-in '{name}'"))?;
         let length: f64 = exemplar.paths.iter().map(|p| p.length_mm()).sum();
-        println!("{name:10} {:3} path(s) {:6.0} mm of curve", exemplar.paths.len(), length);
+        let shapes = match exemplar.shapes.len() {
+            0 => String::new(),
+            n => format!(", {n} filled shape(s)"),
+        };
+        println!("{name:10} {:3} path(s) {:6.0} mm of curve{shapes}", exemplar.paths.len(), length);
     }
     Ok(())
 }

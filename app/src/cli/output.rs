@@ -238,8 +238,10 @@ pub fn write_outputs(
     // Stroked paths (a fill) are drawn as strokes for a pen, unless cut
     // outlines are asked for.
     let svg = args.svg.as_ref().map(|_| match svg_options.flavour {
-        SvgFlavour::Engrave if !product.paths_mm.is_empty() && svg_options.kerf_mm == 0.0 => {
-            write_paths_svg(&product.paths_mm)
+        SvgFlavour::Engrave
+            if !(product.paths_mm.is_empty() && product.filled_mm.is_empty()) && svg_options.kerf_mm == 0.0 =>
+        {
+            write_paths_svg(&product.paths_mm, &product.filled_mm)
         }
         _ => write_svg(&product.region_mm, &svg_options),
     });

@@ -9,14 +9,14 @@ use tracery_core::DVec2;
 use tracery_core::Product;
 use tracery_core::control::Control;
 use tracery_core::curve::Curve;
-use tracery_core::geom::{Rect, Region};
+use tracery_core::geom::{Rect, Region, fill_triangles};
 use tracery_core::region_fill::{
     BUILTIN_CURVES, CurveExemplar, CurvePath, FillError, Settings, make_product_around, print_drawn,
     region_from_outlines,
 };
 
 use super::{ModeEnv, ModeJob, ModeUi, same};
-use crate::canvas::{View, polyline};
+use crate::canvas::{View, fill, polyline};
 use crate::command::Command;
 use crate::document::{Document, DocumentError, ExemplarRef, ModeSettings, RegionFillItem, inside};
 use crate::panels::exemplar_picker::thumbnail_grid_ui;
@@ -101,6 +101,11 @@ fn thumbnail_ui(ui: &mut egui::Ui, env: &mut ModeEnv<'_>, r: &ExemplarRef) -> eg
     let view = View { center_mm: [b.center().x, b.center().y], points_per_mm: scale };
     for path in &exemplar.paths {
         painter.add(polyline(&view, rect, &path.points_mm, path.closed, egui::Stroke::new(1.0, ink)));
+    }
+    // Filled shapes (the berries) filled, as the fill draws its elements.
+    let shapes = Region::new(exemplar.shapes.iter().map(|s| s.polygon.clone()).collect());
+    if !shapes.is_empty() {
+        painter.add(fill(&view, rect, &fill_triangles(&shapes), ink));
     }
     response.on_hover_text(r.name())
 }

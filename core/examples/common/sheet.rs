@@ -65,6 +65,20 @@ pub fn stroke_polyline(
     }
 }
 
+/// Closed rings, already in pixels, filled together (even-odd).
+pub fn fill_rings(pixmap: &mut tiny_skia::Pixmap, rings_px: &[Vec<(f32, f32)>], paint: &tiny_skia::Paint) {
+    let mut path = tiny_skia::PathBuilder::new();
+    for ring in rings_px {
+        for (k, &(x, y)) in ring.iter().enumerate() {
+            if k == 0 { path.move_to(x, y) } else { path.line_to(x, y) }
+        }
+        path.close();
+    }
+    if let Some(path) = path.finish() {
+        pixmap.fill_path(&path, paint, tiny_skia::FillRule::EvenOdd, tiny_skia::Transform::identity(), None);
+    }
+}
+
 /// `region` drawn filled (even-odd) in `rgb` on a white tile.
 pub fn render(region: &Region, width: u32, height: u32, margin: f64, (r, g, b): (u8, u8, u8)) -> tiny_skia::Pixmap {
     let mut pixmap = tiny_skia::Pixmap::new(width, height).expect("tile size");

@@ -172,22 +172,30 @@ fn ring_path(ring: &[DVec2], to_page: impl Fn(DVec2) -> DVec2) -> Option<String>
 
 /// Stroked paths as an SVG document for a pen plotter or a laser that
 /// engraves lines: each path a black stroke of its own width with round
-/// caps and joins, sized in millimetres as [`write_svg`] sizes regions.
+/// caps and joins, sized in millimetres as [`write_svg`] sizes regions;
+/// then the `filled` shapes (a fill's discrete elements), filled black.
 ///
 /// ```
 /// use tracery_core::DVec2;
 /// use tracery_core::export::write_paths_svg;
+/// use tracery_core::geom::{Polygon, Region};
 /// use tracery_core::product::StrokedPath;
 /// let line = StrokedPath { points_mm: vec![DVec2::ZERO, DVec2::new(10.0, 5.0)], closed: false, width_mm: 0.8 };
-/// let svg = write_paths_svg(&[line]);
+/// let svg = write_paths_svg(&[line.clone()], &Region::default());
 /// assert_eq!(svg.matches("<path").count(), 1);
 /// assert!(svg.contains(r#"stroke-width="0.800""#) && svg.contains(r#"fill="none""#));
+/// let dot = Polygon { outer: vec![DVec2::new(3.0, 3.0), DVec2::new(4.0, 3.0), DVec2::new(4.0, 4.0)], holes: vec![] };
+/// let with_dot = write_paths_svg(&[line], &Region::new(vec![dot]));
+/// assert_eq!(with_dot.matches("<path").count(), 2);
+/// assert!(with_dot.contains(r#"<g id="elements" fill="black""#));
 /// ```
-pub fn write_paths_svg(paths: &[crate::product::StrokedPath]) -> String {
+pub fn write_paths_svg(paths: &[crate::product::StrokedPath], filled: &Region) -> String {
     let reach = paths.iter().map(|p| 0.5 * p.width_mm).fold(0.0, f64::max);
-    let bounds = Rect::from_points(paths.iter().flat_map(|p| p.points_mm.iter().copied()))
-        .unwrap_or(Rect::new(DVec2::ZERO, DVec2::ONE))
-        .inflate(MARGIN_MM + reach);
+    let bounds = Rect::from_points(
+        paths.iter().flat_map(|p| p.points_mm.iter().copied()).chain(filled.rings().flatten().copied()),
+    )
+    .unwrap_or(Rect::new(DVec2::ZERO, DVec2::ONE))
+    .inflate(MARGIN_MM + reach);
     let (mut svg, to_page) = page(&bounds);
     let _ = writeln!(
         svg,
@@ -213,6 +221,17 @@ pub fn write_paths_svg(paths: &[crate::product::StrokedPath]) -> String {
             points.join(" L")
         );
     }
-    svg.push_str("  </g>\n</svg>\n");
+    svg.push_str("  </g>\n");
+    if !filled.is_empty() {
+        let _ = writeln!(svg, r#"  <g id="elements" fill="black" stroke="none">"#);
+        for polygon in &filled.polygons {
+            let d: Vec<String> = polygon.rings().filter_map(|r| ring_path(r, to_page)).collect();
+            if !d.is_empty() {
+                let _ = writeln!(svg, r#"    <path fill-rule="evenodd" d="{}"/>"#, d.join(" "));
+            }
+        }
+        svg.push_str("  </g>\n");
+    }
+    svg.push_str("</svg>\n");
     svg
 }

@@ -4,11 +4,13 @@
 //! sweep use them to check it.
 
 mod curves;
+mod elements;
 
 pub use curves::{
     BEND_STEP_MM, CURVATURE_BIN, CURVATURE_BINS, CurveStatistics, MEET_TOLERANCE_MM, ORIENTATION_BINS, coverage,
     curve_statistics, curve_statistics_within, histogram_distance, histogram_emd, histogram_emd_circular,
 };
+pub use elements::{ElementStatistics, TOUCH_MM, element_statistics};
 
 use glam::DVec2;
 

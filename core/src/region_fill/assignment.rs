@@ -177,6 +177,8 @@ pub fn assign_edges(output: &mut SampleGraph, input: &SampleGraph, pairs: &[Matc
 /// into clusters half a spacing wide; a cluster becomes a sample where it
 /// was proposed by more than half of the output neighbourhoods that would
 /// hold it, `inside` the domain and not on top of a sample already there.
+/// Each comes with its kind (`None` on a path, or an element's kind), and
+/// candidates of different kinds are never one cluster.
 pub fn missing_samples(
     output: &SampleGraph,
     input: &SampleGraph,
@@ -184,8 +186,8 @@ pub fn missing_samples(
     delta_mm: f64,
     radius_mm: f64,
     inside: &dyn Fn(DVec2) -> bool,
-) -> Vec<DVec2> {
-    let mut candidates: Vec<DVec2> = Vec::new();
+) -> Vec<(DVec2, Option<u32>)> {
+    let mut candidates: Vec<(DVec2, Option<u32>)> = Vec::new();
     for pair in pairs {
         let mut used = vec![false; pair.members_i.len()];
         for i in pair.matching.input_of.iter().flatten() {
@@ -195,24 +197,25 @@ pub fn missing_samples(
         let centre_o = output.samples[pair.centre_o as usize].position_mm;
         for (k, &member) in pair.members_i.iter().enumerate() {
             if !used[k] {
-                candidates.push(input.samples[member as usize].position_mm - centre_i + centre_o);
+                let sample = &input.samples[member as usize];
+                candidates.push((sample.position_mm - centre_i + centre_o, sample.element));
             }
         }
     }
     // Greedy clustering: each candidate joins the nearest cluster whose
     // centre is within half a spacing, or starts one.
-    let mut clusters: Vec<(DVec2, f64)> = Vec::new();
+    let mut clusters: Vec<(DVec2, f64, Option<u32>)> = Vec::new();
     let cell = 0.5 * delta_mm;
     let key = |p: DVec2| ((p.x / cell).floor() as i64, (p.y / cell).floor() as i64);
     let mut grid: FxHashMap<(i64, i64), Vec<usize>> = FxHashMap::default();
-    for c in candidates {
+    for (c, kind) in candidates {
         let (cx, cy) = key(c);
         let mut best: Option<(usize, f64)> = None;
         for dx in -1..=1 {
             for dy in -1..=1 {
                 for &k in grid.get(&(cx + dx, cy + dy)).map_or(&[][..], |v| &v[..]) {
                     let d = (clusters[k].0 / clusters[k].1).distance(c);
-                    if d < cell && best.is_none_or(|(_, bd)| d < bd) {
+                    if clusters[k].2 == kind && d < cell && best.is_none_or(|(_, bd)| d < bd) {
                         best = Some((k, d));
                     }
                 }
@@ -225,18 +228,18 @@ pub fn missing_samples(
             }
             None => {
                 grid.entry((cx, cy)).or_default().push(clusters.len());
-                clusters.push((c, 1.0));
+                clusters.push((c, 1.0, kind));
             }
         }
     }
     let existing = super::SampleGrid::new(output, radius_mm);
     clusters
         .into_iter()
-        .filter_map(|(sum, count)| {
+        .filter_map(|(sum, count, kind)| {
             let at = sum / count;
             let holding = existing.within(output, at, radius_mm).len() as f64;
             let crowded = !existing.within(output, at, 0.5 * delta_mm).is_empty();
-            (inside(at) && !crowded && holding > 0.0 && count / holding > 0.5).then_some(at)
+            (inside(at) && !crowded && holding > 0.0 && count / holding > 0.5).then_some((at, kind))
         })
         .collect()
 }

@@ -1,16 +1,18 @@
 //! Built-in curve exemplars, drawn here as polylines in a tile about 40 mm
-//! square: spirals, a vine with tendrils, a meander, waves, crackle and
-//! scales. Each is made of stroked paths; where one path ends on another
-//! the two join (a junction).
+//! square: spirals, a vine with tendrils, a meander, waves, crackle,
+//! scales, and berries on stalks. Each is made of stroked paths; where one
+//! path ends on another the two join (a junction). The berries also have
+//! filled shapes (discrete elements).
 
 use std::f64::consts::{PI, TAU};
 
 use glam::DVec2;
 
 use super::CurvePath;
+use crate::geom::{Polygon, disc};
 
 /// The built-in curve exemplars' names.
-pub const BUILTIN_CURVES: [&str; 6] = ["spirals", "vine", "meander", "waves", "crackle", "scales"];
+pub const BUILTIN_CURVES: [&str; 7] = ["spirals", "vine", "meander", "waves", "crackle", "scales", "berries"];
 
 /// Side of the square tile the built-ins are drawn in, mm.
 const TILE_MM: f64 = 40.0;
@@ -18,7 +20,9 @@ const TILE_MM: f64 = 40.0;
 /// Points per millimetre of curve: fine enough that flattening is far below any sample spacing.
 const POINTS_PER_MM: f64 = 4.0;
 
-/// The built-in curve exemplar `name`, or `None`.
+/// The built-in curve exemplar `name`, or `None`: its stroked paths, then
+/// the outlines of its filled shapes ([`builtin_shapes`]), as an SVG
+/// drawing of it would be read.
 ///
 /// ```
 /// use tracery_core::region_fill::{BUILTIN_CURVES, builtin_curves};
@@ -29,6 +33,13 @@ const POINTS_PER_MM: f64 = 4.0;
 /// assert!(builtin_curves("nothing").is_none());
 /// ```
 pub fn builtin_curves(name: &str) -> Option<Vec<CurvePath>> {
+    let mut paths = builtin_strokes(name)?;
+    paths.extend(builtin_shapes(name).into_iter().map(|s| CurvePath { points_mm: s.outer, closed: true }));
+    Some(paths)
+}
+
+/// The stroked paths of the built-in `name`.
+pub(super) fn builtin_strokes(name: &str) -> Option<Vec<CurvePath>> {
     Some(match name {
         "spirals" => spirals(),
         "vine" => vine(),
@@ -36,8 +47,75 @@ pub fn builtin_curves(name: &str) -> Option<Vec<CurvePath>> {
         "waves" => waves(),
         "crackle" => crackle(),
         "scales" => scales(),
+        "berries" => stems_and_stalks(),
         _ => return None,
     })
+}
+
+/// The filled shapes of the built-in `name` (none for most).
+///
+/// ```
+/// use tracery_core::region_fill::builtin_shapes;
+/// assert_eq!(builtin_shapes("berries").len(), 20);
+/// assert!(builtin_shapes("waves").is_empty());
+/// ```
+pub fn builtin_shapes(name: &str) -> Vec<Polygon> {
+    match name {
+        "berries" => berries(),
+        _ => Vec::new(),
+    }
+}
+
+/// Radius of a berry, mm.
+const BERRY_MM: f64 = 1.1;
+
+/// Radius of a loose dot between the stems, mm.
+const DOT_MM: f64 = 0.6;
+
+/// Where the berries' stalks leave the stems: `(x, stem row, side)`.
+fn stalks() -> Vec<(f64, usize, f64)> {
+    (0..16).map(|k| (2.5 + 5.0 * (k % 8) as f64, k / 8, if k % 2 == 0 { 1.0 } else { -1.0 })).collect()
+}
+
+/// A stem of the berries, row `row`, at `x`.
+fn berry_stem(row: usize, x: f64) -> DVec2 {
+    let y = [11.0, 29.0][row];
+    DVec2::new(x, y + 2.5 * (x / TILE_MM * TAU + 2.0 * row as f64).sin())
+}
+
+/// The direction a stalk leaves its stem: 60° from `+x`, up or down.
+fn stalk_direction(side: f64) -> DVec2 {
+    DVec2::from_angle(side * PI / 3.0)
+}
+
+/// Length of a stalk, mm.
+const STALK_MM: f64 = 2.5;
+
+/// Two wavy stems, with a short straight stalk leaving them every 5 mm,
+/// up and down by turns, each ending on a berry.
+fn stems_and_stalks() -> Vec<CurvePath> {
+    let mut out: Vec<CurvePath> = (0..2).map(|row| traced(TILE_MM, |t| berry_stem(row, t * TILE_MM))).collect();
+    for (x, row, side) in stalks() {
+        let start = berry_stem(row, x);
+        let end = start + stalk_direction(side) * STALK_MM;
+        out.push(CurvePath { points_mm: vec![start, end], closed: false });
+    }
+    out
+}
+
+/// A berry at the end of each stalk, and a loose dot between the stems
+/// every 10 mm.
+fn berries() -> Vec<Polygon> {
+    let sides = 24;
+    let mut out: Vec<Polygon> = stalks()
+        .into_iter()
+        .map(|(x, row, side)| {
+            let end = berry_stem(row, x) + stalk_direction(side) * STALK_MM;
+            disc(end + stalk_direction(side) * BERRY_MM, BERRY_MM, sides)
+        })
+        .collect();
+    out.extend((0..4).map(|k| disc(DVec2::new(5.0 + 10.0 * k as f64, 20.0), DOT_MM, sides)));
+    out
 }
 
 /// An open path through `f(t)` for `t` in `0..=1`, `length_mm` long about.

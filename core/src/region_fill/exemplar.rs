@@ -3,7 +3,8 @@
 
 use std::path::Path;
 
-use super::{BUILTIN_CURVES, CurvePath, FillError, builtin_curves};
+use super::builtin::builtin_strokes;
+use super::{BUILTIN_CURVES, CurvePath, Elements, FillError, builtin_shapes, is_element_sized};
 use crate::curve::svg_shapes;
 use crate::geom::{Polygon, centre_lines, resolve_contours};
 
@@ -38,6 +39,9 @@ pub struct CurveExemplar {
     pub paths: Vec<CurvePath>,
     /// The filled shapes, whose outlines are among `paths`.
     pub shapes: Vec<FilledShape>,
+    /// Discrete elements learned whole, apart from `paths` (made by
+    /// [`CurveExemplar::curves`] from the small filled shapes).
+    pub elements: Elements,
 }
 
 /// A filled shape of an exemplar: one polygon of a filled SVG path.
@@ -52,12 +56,18 @@ pub struct FilledShape {
 impl CurveExemplar {
     /// An exemplar of `paths` alone, with no filled shapes.
     pub fn from_paths(name: impl Into<String>, paths: Vec<CurvePath>) -> CurveExemplar {
-        CurveExemplar { name: name.into(), paths, shapes: Vec::new() }
+        CurveExemplar { name: name.into(), paths, shapes: Vec::new(), elements: Elements::default() }
     }
 
     /// The built-in `name`, or `None`.
     pub fn builtin(name: &str) -> Option<CurveExemplar> {
-        builtin_curves(name).map(|paths| CurveExemplar::from_paths(name, paths))
+        let mut exemplar = CurveExemplar::from_paths(name, builtin_strokes(name)?);
+        for polygon in builtin_shapes(name) {
+            let first_path = exemplar.paths.len();
+            exemplar.paths.push(CurvePath { points_mm: polygon.outer.clone(), closed: true });
+            exemplar.shapes.push(FilledShape { polygon, first_path });
+        }
+        Some(exemplar)
     }
 
     /// Every subpath of an SVG drawing's stroked paths, and the outline of
@@ -98,13 +108,15 @@ impl CurveExemplar {
         if paths.is_empty() {
             return Err(FillError::NoStrokes);
         }
-        Ok(CurveExemplar { name: name.into(), paths, shapes })
+        Ok(CurveExemplar { name: name.into(), paths, shapes, elements: Elements::default() })
     }
 
     /// The curves the fill learns from at sample spacing `delta_mm`: each
-    /// filled shape that is mostly a band no wider than
-    /// [`BAND_MAX_WIDTH_SPACINGS`] spacings is read as its centre lines,
-    /// the line it was drawn along; other shapes as their outlines.
+    /// filled shape small enough to sit within a neighbourhood
+    /// ([`ELEMENT_MAX_SPACINGS`](super::ELEMENT_MAX_SPACINGS)) is a discrete element, learned whole; one
+    /// that is mostly a band no wider than [`BAND_MAX_WIDTH_SPACINGS`]
+    /// spacings is read as its centre lines, the line it was drawn along;
+    /// other shapes as their outlines.
     ///
     /// ```
     /// use tracery_core::region_fill::CurveExemplar;
@@ -118,6 +130,9 @@ impl CurveExemplar {
     /// assert!(curves.paths[0].closed && (curves.paths[0].length_mm() - 20.0 * std::f64::consts::PI).abs() < 1.0);
     /// // At 0.5 mm spacing the two outlines are far enough apart to keep.
     /// assert_eq!(ring.curves(0.5).paths.len(), 2);
+    /// // At 5 mm spacing the ring fits within a neighbourhood: an element.
+    /// let coarse = ring.curves(5.0);
+    /// assert!(coarse.paths.is_empty() && coarse.elements.placed.len() == 1);
     /// ```
     pub fn curves(&self, delta_mm: f64) -> CurveExemplar {
         if self.shapes.is_empty() {
@@ -125,18 +140,25 @@ impl CurveExemplar {
         }
         let mut outline = vec![false; self.paths.len()];
         let mut lines = Vec::new();
+        let mut elements = self.elements.clone();
         for shape in &self.shapes {
+            let rings = shape.polygon.rings().count();
+            let span = shape.first_path..(shape.first_path + rings).min(self.paths.len());
+            if is_element_sized(&shape.polygon, delta_mm) {
+                outline[span].fill(true);
+                elements.add(&shape.polygon);
+                continue;
+            }
             let Some(centre) = centre_lines(&shape.polygon, CENTRE_LINE_STEP_SPACINGS * delta_mm) else { continue };
             if centre.paths.is_empty() || centre.width_at(BAND_SHARE) > BAND_MAX_WIDTH_SPACINGS * delta_mm {
                 continue;
             }
-            let rings = shape.polygon.rings().count();
-            outline[shape.first_path..(shape.first_path + rings).min(self.paths.len())].fill(true);
+            outline[span].fill(true);
             lines.extend(centre.paths.into_iter().map(|(points_mm, closed)| CurvePath { points_mm, closed }));
         }
         let paths =
             self.paths.iter().zip(&outline).filter(|(_, out)| !**out).map(|(p, _)| p.clone()).chain(lines).collect();
-        CurveExemplar::from_paths(self.name.clone(), paths)
+        CurveExemplar { elements, ..CurveExemplar::from_paths(self.name.clone(), paths) }
     }
 
     /// A built-in by name, or an SVG file.
@@ -179,17 +201,17 @@ impl CurveExemplar {
             .iter()
             .map(|s| FilledShape { polygon: s.polygon.map_points(|q| q * factor), first_path: s.first_path })
             .collect();
-        CurveExemplar { name: self.name.clone(), paths, shapes }
+        CurveExemplar { name: self.name.clone(), paths, shapes, elements: self.elements.scaled(factor) }
     }
 
     /// Checks the exemplar has something to learn from and is not so large
     /// that sampling it at `delta_mm` would take too long.
     pub fn validate(&self, delta_mm: f64) -> Result<(), FillError> {
         let length: f64 = self.paths.iter().map(CurvePath::length_mm).sum();
-        if self.paths.is_empty() || length <= 0.0 {
+        if (self.paths.is_empty() || length <= 0.0) && self.elements.is_empty() {
             return Err(FillError::NoStrokes);
         }
-        let samples = (length / delta_mm).ceil() as usize;
+        let samples = (length / delta_mm).ceil() as usize + self.elements.placed.len();
         if samples > MAX_EXEMPLAR_SAMPLES {
             return Err(FillError::ExemplarTooLarge { samples, max: MAX_EXEMPLAR_SAMPLES });
         }

@@ -57,6 +57,17 @@ impl SampleGrid {
     /// outward, without gathering and sorting the rest: the search asks
     /// this for windows up to half the exemplar wide.
     pub fn nearest(&self, graph: &SampleGraph, centre: DVec2, radius_mm: f64) -> Option<u32> {
+        self.nearest_where(graph, centre, radius_mm, &|_| true)
+    }
+
+    /// As [`SampleGrid::nearest`], among the samples `wanted` accepts.
+    pub fn nearest_where(
+        &self,
+        graph: &SampleGraph,
+        centre: DVec2,
+        radius_mm: f64,
+        wanted: &dyn Fn(u32) -> bool,
+    ) -> Option<u32> {
         let reach = (radius_mm / self.cell_mm).ceil() as i64;
         let (cx, cy) = cell_of(centre, self.cell_mm);
         let mut best: Option<(f64, u32)> = None;
@@ -73,7 +84,7 @@ impl SampleGrid {
                     }
                     for &s in self.cells.get(&(cx + dx, cy + dy)).map_or(&[][..], |v| &v[..]) {
                         let d = graph.samples[s as usize].position_mm.distance(centre);
-                        if d <= radius_mm && best.is_none_or(|b| (d, s) < b) {
+                        if d <= radius_mm && best.is_none_or(|b| (d, s) < b) && wanted(s) {
                             best = Some((d, s));
                         }
                     }
@@ -186,12 +197,20 @@ pub struct Similarity {
     /// Sample spacing at this level, mm: the paper's β, and the scale of
     /// the cost of leaving a sample unmatched.
     pub delta_mm: f64,
+    /// The cost of leaving a discrete element's sample unmatched, mm.
+    pub element_unmatched_mm: f64,
 }
 
 impl Similarity {
-    /// Comparisons at sample spacing `delta_mm`.
+    /// Comparisons at sample spacing `delta_mm`; an element left unmatched
+    /// costs as much as a path sample without edges.
     pub fn new(delta_mm: f64) -> Similarity {
-        Similarity { delta_mm }
+        Similarity { delta_mm, element_unmatched_mm: 1.2 * delta_mm }
+    }
+
+    /// The same, with an element left unmatched costing `cost_mm`.
+    pub fn with_element_unmatched(self, cost_mm: f64) -> Similarity {
+        Similarity { element_unmatched_mm: cost_mm, ..self }
     }
 }
 
@@ -259,11 +278,22 @@ impl NeighbourhoodPair<'_> {
     pub fn distance_below(&self, similarity: &Similarity, bound: f64) -> Option<Matching> {
         let (output, input) = (self.output, self.input);
         let (n, m) = (self.members_o.len(), self.members_i.len());
+        // Only samples of one kind match (section 4.2.3): paths with paths,
+        // and an element with elements of its kind.
+        if output.samples[self.s_o].element != input.samples[self.s_i].element {
+            return None;
+        }
         let (centre_o, centre_i) = (output.samples[self.s_o].position_mm, input.samples[self.s_i].position_mm);
         let offsets_i: SmallVec<[DVec2; 64]> =
             self.members_i.iter().map(|&s| input.samples[s as usize].position_mm - centre_i).collect();
-        let unmatched: SmallVec<[f64; 64]> =
-            self.members_o.iter().map(|&s| unmatched_cost(output, s as usize, similarity.delta_mm)).collect();
+        let unmatched: SmallVec<[f64; 64]> = self
+            .members_o
+            .iter()
+            .map(|&s| match output.samples[s as usize].element {
+                Some(_) => similarity.element_unmatched_mm,
+                None => unmatched_cost(output, s as usize, similarity.delta_mm),
+            })
+            .collect();
         let mut costs: SmallVec<[f64; 1024]> = smallvec::smallvec![0.0; n * m];
         let mut lower = 0.0;
         let mut row_least: SmallVec<[f64; 64]> = SmallVec::with_capacity(n);
@@ -271,8 +301,13 @@ impl NeighbourhoodPair<'_> {
             let offset_o = output.samples[so as usize].position_mm - centre_o;
             let row = &mut costs[o * m..(o + 1) * m];
             let mut least = unmatched[o];
-            for (c, offset_i) in row.iter_mut().zip(&offsets_i) {
-                *c = offset_o.distance(*offset_i);
+            let kind = output.samples[so as usize].element;
+            for ((c, offset_i), &si) in row.iter_mut().zip(&offsets_i).zip(self.members_i) {
+                *c = if input.samples[si as usize].element == kind {
+                    offset_o.distance(*offset_i)
+                } else {
+                    f64::INFINITY
+                };
                 least = least.min(*c);
             }
             row_least.push(least);

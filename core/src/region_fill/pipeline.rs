@@ -4,8 +4,8 @@
 
 use crate::control::Control;
 use crate::geom::{
-    Rect, Region, brush_stroke, clip_polylines, count_topology, difference, fill_triangles, intersection, join_parts,
-    offset, union,
+    Polygon, Rect, Region, brush_stroke, clip_polylines, count_topology, difference, fill_triangles, intersection,
+    join_parts, offset, union,
 };
 use crate::mesh::extrude;
 use crate::product::{Fact, Facts, Product, StrokedPath};
@@ -15,8 +15,8 @@ use glam::DVec2;
 
 use super::fragments::{degrees, key};
 use super::{
-    CurveExemplar, CurvePath, FillError, FragmentLimits, JOIN_TOLERANCE_MM, SampleGraph, Settings, Synthesized,
-    check_region, join_drawn_ends, smooth_paths_oriented, synthesize_oriented,
+    CurveExemplar, CurvePath, Elements, FillError, FragmentLimits, JOIN_TOLERANCE_MM, SampleGraph, Settings,
+    Synthesized, check_region, join_drawn_ends, smooth_paths_oriented, synthesize_oriented,
 };
 
 /// Paths left shorter than this many sample spacings by clipping are
@@ -32,6 +32,10 @@ const FRAGMENT_FALLBACK_SPACINGS: f64 = 4.0;
 /// whatever the exemplar: longer than the spirals' loose spirals (7.6
 /// radii at the defaults), and past what one neighbourhood can judge stray.
 const FRAGMENT_CAP_RADII: f64 = 8.0;
+
+/// The share of an element's area that may lie outside the region (by
+/// rounding, where its edge runs along the region's) before it is left out.
+const ELEMENT_OUTSIDE_SHARE: f64 = 1e-6;
 
 /// Fills `region` (mm) with a curve texture like `exemplar`.
 ///
@@ -64,13 +68,13 @@ pub fn make_product_around(
     control: &Control,
 ) -> Result<Product, FillError> {
     let mut timings = Timings::default();
-    let paths = predict_timed(exemplar, region, drawn, settings, control, &mut timings)?;
+    let predicted = predict_timed(exemplar, region, drawn, settings, control, &mut timings)?;
     // Everything may also go as fragments or outside the region.
-    if paths.is_empty() && drawn.is_empty() {
+    if predicted.paths.is_empty() && predicted.elements.is_empty() && drawn.is_empty() {
         let bounds = region.bounds().ok_or(FillError::EmptyRegion)?;
         return Err(nothing_left(exemplar, &bounds, settings.exemplar_scale, settings));
     }
-    finish(paths, region, drawn, settings, control, timings)
+    finish(predicted, region, drawn, settings, control, timings)
 }
 
 /// What prints of the paths a person `drawn` in `region` (mm) alone, with
@@ -94,7 +98,7 @@ pub fn print_drawn(
     if region.is_empty() {
         return Err(FillError::EmptyRegion);
     }
-    finish(Vec::new(), region, drawn, settings, control, Timings::default())
+    finish(Predicted::default(), region, drawn, settings, control, Timings::default())
 }
 
 /// Why a fill of `bounds` kept nothing of `exemplar` drawn `scale` times larger.
@@ -108,17 +112,18 @@ fn nothing_left(exemplar: &CurveExemplar, bounds: &Rect, scale: f64, settings: &
     }
 }
 
-/// The product of new `paths` and `drawn` ones in `region`.
+/// The product of what was `predicted` and the paths `drawn` in `region`.
 fn finish(
-    paths: Vec<CurvePath>,
+    predicted: Predicted,
     region: &Region,
     drawn: &[CurvePath],
     settings: &Settings,
     control: &Control,
     mut timings: Timings,
 ) -> Result<Product, FillError> {
+    let Predicted { paths, elements } = predicted;
     let printed: Vec<CurvePath> = paths.iter().chain(&clip_paths(drawn, region, 0.0)).cloned().collect();
-    let (print, bridges) = timings.time("strokes", || print_region(&printed, region, settings));
+    let (print, bridges) = timings.time("strokes", || print_region(&printed, &elements, region, settings));
     control.check()?;
     let topology = count_topology(&print);
     // Nothing drawn yet in a fill that is not filled automatically prints nothing.
@@ -126,6 +131,7 @@ fn finish(
         if print.is_empty() { None } else { Some(timings.time("mesh", || extrude(&print, settings.thickness_mm))?) };
     let mut facts = Facts::default();
     facts.push("paths", Fact::Count(paths.len()));
+    facts.push("elements", Fact::Count(elements.len()));
     facts.push("length_mm", Fact::Number(paths.iter().map(CurvePath::length_mm).sum()));
     facts.push("region_area_mm2", Fact::Number(region.area()));
     facts.push("coverage", Fact::Number(print.area() / region.area()));
@@ -136,6 +142,7 @@ fn finish(
     let mut product = Product {
         fill_mm: fill_triangles(&print),
         paths_mm: stroked_paths(paths, region, settings),
+        filled_mm: Region::new(elements),
         mesh_mm: mesh,
         topology: topology.into(),
         timings,
@@ -176,7 +183,16 @@ pub fn predict(
     control: &Control,
 ) -> Result<Vec<CurvePath>, FillError> {
     let settings = Settings { iterations: settings.iterations.min(PREDICTION_ITERATIONS), ..settings.clone() };
-    predict_timed(exemplar, region, drawn, &settings, control, &mut Timings::default())
+    Ok(predict_timed(exemplar, region, drawn, &settings, control, &mut Timings::default())?.paths)
+}
+
+/// What a fill made in its region: paths, and discrete elements whole.
+#[derive(Clone, Debug, Default)]
+struct Predicted {
+    /// Smoothed and clipped to the region, mm.
+    paths: Vec<CurvePath>,
+    /// The shapes of the elements lying wholly within the region, mm.
+    elements: Vec<Polygon>,
 }
 
 fn predict_timed(
@@ -186,7 +202,7 @@ fn predict_timed(
     settings: &Settings,
     control: &Control,
     timings: &mut Timings,
-) -> Result<Vec<CurvePath>, FillError> {
+) -> Result<Predicted, FillError> {
     settings.validate()?;
     let scaled;
     let exemplar = if settings.exemplar_scale == 1.0 {
@@ -207,9 +223,10 @@ fn predict_timed(
             .is_some_and(|b| b.max.cmpge(reach.min).all() && b.min.cmple(reach.max).all())
     };
     let drawn: Vec<CurvePath> = drawn.iter().filter(|p| near(p)).cloned().collect();
-    let Synthesized { paths: mut synthesized, tangents } =
-        timings.time("synthesis", || synthesize_oriented(&exemplar.paths, &bounds, &drawn, settings, control))?;
-    if synthesized.is_empty() && drawn.is_empty() {
+    let Synthesized { paths: mut synthesized, tangents, elements } = timings.time("synthesis", || {
+        synthesize_oriented(&exemplar.paths, &exemplar.elements, &bounds, &drawn, settings, control)
+    })?;
+    if synthesized.is_empty() && elements.is_empty() && drawn.is_empty() {
         return Err(nothing_left(exemplar, &bounds, 1.0, settings));
     }
     // A new path that stops just short of a drawn stroke's end continues it.
@@ -226,7 +243,44 @@ fn predict_timed(
         let anchored = |p: DVec2| !(p.cmpgt(inner.min).all() && p.cmplt(inner.max).all()) || on_drawn(p);
         Ok::<_, FillError>(smooth_paths_oriented(&limits.remove_from(synthesized, anchored), &tangents))
     })?;
-    Ok(timings.time("clip", || clip_paths(&smooth, region, MIN_CLIPPED_SPACINGS * settings.delta_mm)))
+    let paths = timings.time("clip", || clip_paths(&smooth, region, MIN_CLIPPED_SPACINGS * settings.delta_mm));
+    let elements = timings
+        .time("elements", || elements_within(&exemplar.elements.with_placed(elements), &exemplar.elements, region));
+    Ok(Predicted { paths, elements })
+}
+
+/// The shapes of `elements` that lie wholly within `region`: an element
+/// is whole or absent, never cut by the region's edge. Where the
+/// exemplar's elements (`learned`) never overlap, an element overlapping
+/// one kept before it goes too: two berries grown into one blob are no
+/// element of the exemplar.
+fn elements_within(elements: &Elements, learned: &Elements, region: &Region) -> Vec<Polygon> {
+    let learned_apart = {
+        let shapes = learned.polygons();
+        !(0..shapes.len()).any(|a| (a + 1..shapes.len()).any(|b| overlapping(&shapes[a], &shapes[b])))
+    };
+    let mut kept: Vec<Polygon> = Vec::new();
+    for shape in elements.polygons() {
+        let alone = Region::new(vec![shape.clone()]);
+        let inside = difference(&alone, region).area() <= ELEMENT_OUTSIDE_SHARE * shape.area();
+        if inside && !(learned_apart && kept.iter().any(|k| overlapping(k, &shape))) {
+            kept.push(shape);
+        }
+    }
+    kept
+}
+
+/// Whether two shapes share area (more than rounding).
+fn overlapping(a: &Polygon, b: &Polygon) -> bool {
+    let (Some(ba), Some(bb)) = (Rect::from_points(a.outer.iter().copied()), Rect::from_points(b.outer.iter().copied()))
+    else {
+        return false;
+    };
+    if ba.max.cmplt(bb.min).any() || bb.max.cmplt(ba.min).any() {
+        return false;
+    }
+    let shared = intersection(&Region::new(vec![a.clone()]), &Region::new(vec![b.clone()])).area();
+    shared > ELEMENT_OUTSIDE_SHARE * a.area().min(b.area())
 }
 
 /// The parts of `paths` inside `region`, less stubs shorter than `min_mm`:
@@ -246,12 +300,13 @@ fn clip_paths(paths: &[CurvePath], region: &Region, min_mm: f64) -> Vec<CurvePat
         .collect()
 }
 
-/// What prints: every path drawn with a round pen, cut to the region,
+/// What prints: every path drawn with a round pen and every element filled, cut to the region,
 /// united with a frame along the region's edge; with `one_piece`, joined
 /// by bridges. Also the number of bridges.
-fn print_region(paths: &[CurvePath], region: &Region, settings: &Settings) -> (Region, usize) {
-    let strokes: Vec<Region> =
+fn print_region(paths: &[CurvePath], elements: &[Polygon], region: &Region, settings: &Settings) -> (Region, usize) {
+    let mut strokes: Vec<Region> =
         paths.iter().map(|p| brush_stroke(&p.points_mm, settings.stroke_width_mm, p.closed)).collect();
+    strokes.push(Region::new(elements.to_vec()));
     let mut all: Vec<&Region> = strokes.iter().collect();
     let frame = if settings.frame_mm > 0.0 {
         difference(region, &offset(region, -settings.frame_mm))

@@ -32,6 +32,10 @@ pub struct Sample {
     pub orientations: SmallVec<[f64; 4]>,
     /// Confidence that the sample exists, `0..=1` (1 in an exemplar).
     pub existence: f64,
+    /// The kind of discrete element this sample stands for, at its centre
+    /// (the paper's id `q`); `None` for a sample of a path. Samples match
+    /// only samples of the same kind.
+    pub element: Option<u32>,
 }
 
 /// A pattern's samples and the edges between them.
@@ -222,9 +226,34 @@ impl SampleGraph {
 
     /// Adds a sample at `position_mm` with no edges; returns its index.
     pub fn add_sample(&mut self, position_mm: DVec2) -> u32 {
-        self.samples.push(Sample { position_mm, orientations: SmallVec::new(), existence: 1.0 });
+        self.add_of_kind(position_mm, None)
+    }
+
+    /// Adds a sample standing for a discrete element of kind `kind`, centred
+    /// at `centre_mm`; it never has edges. Returns its index.
+    ///
+    /// ```
+    /// use tracery_core::DVec2;
+    /// use tracery_core::region_fill::SampleGraph;
+    /// let mut g = SampleGraph::default();
+    /// let dot = g.add_element(DVec2::new(3.0, 4.0), 0);
+    /// assert_eq!(g.samples[dot as usize].element, Some(0));
+    /// assert!(g.to_paths().is_empty(), "an element is no path");
+    /// ```
+    pub fn add_element(&mut self, centre_mm: DVec2, kind: u32) -> u32 {
+        self.add_of_kind(centre_mm, Some(kind))
+    }
+
+    /// Adds a sample of a path (`element` `None`) or an element's centre.
+    pub fn add_of_kind(&mut self, position_mm: DVec2, element: Option<u32>) -> u32 {
+        self.samples.push(Sample { position_mm, orientations: SmallVec::new(), existence: 1.0, element });
         self.neighbours.push(SmallVec::new());
         (self.samples.len() - 1) as u32
+    }
+
+    /// The elements' centres and kinds, in sample order.
+    pub fn elements(&self) -> Vec<(DVec2, u32)> {
+        self.samples.iter().filter_map(|s| s.element.map(|k| (s.position_mm, k))).collect()
     }
 
     /// Joins `a` and `b`, recording at each the direction toward the other.
@@ -237,7 +266,9 @@ impl SampleGraph {
     /// and leaving `b` toward `a` at `at_b` (radians): the tangents of a
     /// curved path rather than the chord between its samples.
     pub fn connect_oriented(&mut self, a: u32, b: u32, at_a: f64, at_b: f64) {
-        if a == b || self.neighbours[a as usize].contains(&b) {
+        // An element is whole in itself: no path runs through its centre.
+        let element = |s: u32| self.samples[s as usize].element.is_some();
+        if a == b || self.neighbours[a as usize].contains(&b) || element(a) || element(b) {
             return;
         }
         self.samples[a as usize].orientations.push(at_a.rem_euclid(std::f64::consts::TAU));
@@ -313,7 +344,7 @@ impl SampleGraph {
         }
         let mut graph = SampleGraph::default();
         for &s in &order {
-            graph.add_sample(self.samples[s].position_mm);
+            graph.add_of_kind(self.samples[s].position_mm, self.samples[s].element);
         }
         for (a, b, at_a, at_b) in self.oriented_edges() {
             graph.connect_oriented(new_index[a as usize], new_index[b as usize], at_a, at_b);

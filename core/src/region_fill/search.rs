@@ -31,6 +31,9 @@ pub struct SearchSettings {
     pub min_window_share: f64,
     /// Seed of the random choices.
     pub seed: u64,
+    /// The cost of leaving a discrete element's sample unmatched, mm
+    /// ([`Similarity::element_unmatched_mm`]).
+    pub element_unmatched_mm: f64,
 }
 
 impl SearchSettings {
@@ -45,6 +48,7 @@ impl SearchSettings {
             max_window_share: 0.5,
             min_window_share: 0.08,
             seed: 1,
+            element_unmatched_mm: Similarity::new(delta_mm).element_unmatched_mm,
         }
     }
 }
@@ -112,14 +116,20 @@ pub fn search(
     if n_out == 0 || input.samples.is_empty() {
         return NearestField::default();
     }
-    let similarity = Similarity::new(settings.delta_mm);
+    let similarity = Similarity::new(settings.delta_mm).with_element_unmatched(settings.element_unmatched_mm);
     let (low, high) = input
         .samples
         .iter()
         .fold((DVec2::MAX, DVec2::MIN), |(lo, hi), s| (lo.min(s.position_mm), hi.max(s.position_mm)));
     let input_size_mm = (high - low).max_element().max(settings.delta_mm);
-    // The input sample nearest a point, if any lies within reach.
-    let nearest_input = |p: DVec2, reach_mm: f64| input_near.grid.nearest(input, p, reach_mm);
+    // The input sample of kind `kind` nearest a point, if any lies within reach.
+    let nearest_input = |p: DVec2, reach_mm: f64, kind: Option<u32>| {
+        input_near.grid.nearest_where(input, p, reach_mm, &|s| input.samples[s as usize].element == kind)
+    };
+    let mut of_kind: rustc_hash::FxHashMap<Option<u32>, Vec<u32>> = Default::default();
+    for (s, sample) in input.samples.iter().enumerate() {
+        of_kind.entry(sample.element).or_default().push(s as u32);
+    }
     let nearest: Vec<Vec<u32>> = (0..n_out)
         .map(|s| {
             let reach = 2.0 * settings.radius_mm;
@@ -153,7 +163,13 @@ pub fn search(
             NearestField { input_of: f.input_of.clone(), cost }
         }
         _ => {
-            let input_of: Vec<u32> = (0..n_out).map(|_| stream.below(input.samples.len() as u64) as u32).collect();
+            // At random, among the inputs of each output sample's kind.
+            let input_of: Vec<u32> = (0..n_out)
+                .map(|o| match of_kind.get(&output.samples[o].element) {
+                    Some(like) => like[stream.below(like.len() as u64) as usize],
+                    None => stream.below(input.samples.len() as u64) as u32,
+                })
+                .collect();
             let cost = input_of.par_iter().enumerate().map(|(o, &i)| cost_of(o, i)).collect();
             NearestField { input_of, cost }
         }
@@ -164,6 +180,7 @@ pub fn search(
     // loses again against a match that can only have got cheaper.
     let visit_sample = |o: usize, field: &mut NearestField, tried: &mut Vec<u32>, stream: &mut SplitMix64| {
         let here = output.samples[o].position_mm;
+        let kind = output.samples[o].element;
         let mut try_candidate = |field: &mut NearestField, i: u32| {
             if i == field.input_of[o] || tried.contains(&i) {
                 return;
@@ -179,7 +196,7 @@ pub fn search(
         for &n in &nearest[o] {
             let matched = input.samples[field.input_of[n as usize] as usize].position_mm;
             let guess = matched + (here - output.samples[n as usize].position_mm);
-            if let Some(i) = nearest_input(guess, settings.delta_mm) {
+            if let Some(i) = nearest_input(guess, settings.delta_mm, kind) {
                 try_candidate(field, i);
             }
         }
@@ -189,7 +206,7 @@ pub fn search(
             let around = input.samples[field.input_of[o] as usize].position_mm;
             let signed = |s: &mut SplitMix64| 2.0 * s.next_unit() - 1.0;
             let guess = around + DVec2::new(signed(stream), signed(stream)) * window;
-            if let Some(i) = nearest_input(guess, window) {
+            if let Some(i) = nearest_input(guess, window, kind) {
                 try_candidate(field, i);
             }
             window *= 0.5;

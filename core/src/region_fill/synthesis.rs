@@ -12,8 +12,9 @@ use crate::random::SplitMix64;
 
 use super::assignment::{MatchedPair, assign_edges, assign_positions, existence_votes, missing_samples};
 use super::{
-    CurvePath, EdgeTangents, FillError, JOIN_TOLERANCE_MM, LEVELS, NearestField, NeighbourhoodPair, Neighbourhoods,
-    SampleGraph, SampleGrid, SearchSettings, Settings, Similarity, assign_orientations, search,
+    CurvePath, EdgeTangents, Elements, FillError, JOIN_TOLERANCE_MM, LEVELS, NearestField, NeighbourhoodPair,
+    Neighbourhoods, PlacedElement, SampleGraph, SampleGrid, SearchSettings, Settings, Similarity, assign_orientations,
+    search,
 };
 
 /// Patches (section 4.3.2): the rectangle `size_mm` is tiled with squares
@@ -32,8 +33,9 @@ fn initialize(
     let (low, high) = bounds(input);
     // Patches go around what is already drawn; its samples start the search at random.
     let mut sources = NearestField::default();
-    for _ in 0..pinned.samples.len() {
-        sources.input_of.push((rng.next_unit() * input.samples.len() as f64) as u32 % input.samples.len() as u32);
+    let of_kind = KindIndex::new(input);
+    for sample in &pinned.samples {
+        sources.input_of.push(of_kind.random(sample.element, rng));
         sources.cost.push(f64::MAX);
     }
     let mut output = pinned;
@@ -54,7 +56,8 @@ fn initialize(
                 if at.x > size_mm.x || at.y > size_mm.y || !placed.within(&output, at, 0.5 * delta_mm).is_empty() {
                     continue;
                 }
-                output.add_sample(at);
+                // An element is copied whole: it is one sample.
+                output.add_of_kind(at, sample.element);
                 sources.input_of.push(s as u32);
                 sources.cost.push(f64::MAX);
             }
@@ -99,6 +102,29 @@ pub fn synthesize(
     synthesize_around(exemplar, bounds, &[], settings, control)
 }
 
+/// The input samples of each kind (paths, or each kind of element), for
+/// starting an output sample's search at a random sample it may match.
+struct KindIndex(rustc_hash::FxHashMap<Option<u32>, Vec<u32>>);
+
+impl KindIndex {
+    fn new(input: &SampleGraph) -> KindIndex {
+        let mut by_kind: rustc_hash::FxHashMap<Option<u32>, Vec<u32>> = Default::default();
+        for (s, sample) in input.samples.iter().enumerate() {
+            by_kind.entry(sample.element).or_default().push(s as u32);
+        }
+        KindIndex(by_kind)
+    }
+
+    /// A random input sample of kind `kind`; any sample if there is none.
+    fn random(&self, kind: Option<u32>, rng: &mut SplitMix64) -> u32 {
+        let all = self.0.values().flatten().count().max(1);
+        match self.0.get(&kind) {
+            Some(of_kind) => of_kind[(rng.next_unit() * of_kind.len() as f64) as usize % of_kind.len()],
+            None => (rng.next_unit() * all as f64) as u32 % all as u32,
+        }
+    }
+}
+
 /// As [`synthesize`], around paths already drawn (`fixed`, mm): their
 /// samples take part in every neighbourhood but never move, vanish or lose
 /// an edge, so the texture grows out of them and joins them (the paper's
@@ -124,22 +150,28 @@ pub fn synthesize_around(
     settings: &Settings,
     control: &Control,
 ) -> Result<Vec<CurvePath>, FillError> {
-    Ok(synthesize_oriented(exemplar, bounds, fixed, settings, control)?.paths)
+    Ok(synthesize_oriented(exemplar, &Elements::default(), bounds, fixed, settings, control)?.paths)
 }
 
-/// What the synthesis made: its paths, and the orientations of the final
-/// graph's edges that reconstruction follows.
+/// What the synthesis made: its paths, the orientations of the final
+/// graph's edges that reconstruction follows, and its discrete elements.
 #[derive(Clone, Debug, Default)]
 pub struct Synthesized {
     /// The new paths, cut where they meet, mm.
     pub paths: Vec<CurvePath>,
     /// The orientations the final step assigned, by the samples' places.
     pub tangents: EdgeTangents,
+    /// The discrete elements, of the exemplar's kinds, mm.
+    pub elements: Vec<PlacedElement>,
 }
 
-/// As [`synthesize_around`], with the orientations of the final graph.
+/// As [`synthesize_around`], with the orientations of the final graph, and
+/// the discrete `elements` of the exemplar synthesized with its paths:
+/// each is one sample at its centre, at every level, matched only with
+/// elements of its kind (sections 4.1 and 4.2.3).
 pub fn synthesize_oriented(
     exemplar: &[CurvePath],
+    elements: &Elements,
     bounds: &Rect,
     fixed: &[CurvePath],
     settings: &Settings,
@@ -153,12 +185,16 @@ pub fn synthesize_oriented(
         .collect();
     let mut rng = SplitMix64::new(settings.seed);
     let mut paths: Option<Vec<CurvePath>> = None;
+    let mut carried: Vec<(DVec2, u32)> = Vec::new();
     let mut tangents = EdgeTangents::default();
     let steps = (LEVELS * settings.iterations) as f32;
     for level in 0..LEVELS {
         let delta = settings.delta_mm * 2f64.powi((LEVELS - 1 - level) as i32);
         let radius = settings.radius_spacings * delta;
-        let input = SampleGraph::new(exemplar, delta)?;
+        let mut input = SampleGraph::new(exemplar, delta)?;
+        for e in &elements.placed {
+            input.add_element(e.centre_mm, e.kind);
+        }
         let (output, start, pinned) = match &paths {
             None => {
                 let pinned = SampleGraph::new(&fixed, delta)?;
@@ -170,7 +206,11 @@ pub fn synthesize_oriented(
                 let all: Vec<CurvePath> = p.iter().chain(&fixed).cloned().collect();
                 let graph = SampleGraph::new_without_corners(&all, delta)?;
                 let on_fixed = on_paths(&graph, &fixed, JOIN_TOLERANCE_MM);
-                let (graph, pinned) = graph.pinned_first(&on_fixed);
+                let (mut graph, pinned) = graph.pinned_first(&on_fixed);
+                // Elements go on to the next level as they are: one sample at every level.
+                for &(centre, kind) in &carried {
+                    graph.add_element(centre, kind);
+                }
                 (graph, None, pinned)
             }
         };
@@ -190,6 +230,7 @@ pub fn synthesize_oriented(
         // paths (and their edges onto what was drawn) are carried.
         output.disconnect_among(pinned);
         paths = Some(output.to_paths());
+        carried = output.elements();
         if level + 1 == LEVELS {
             tangents = EdgeTangents::of(&output, offset);
         }
@@ -199,7 +240,9 @@ pub fn synthesize_oriented(
         .into_iter()
         .map(|p| CurvePath { points_mm: p.points_mm.iter().map(|q| *q + offset).collect(), ..p })
         .collect();
-    Ok(Synthesized { paths, tangents })
+    let elements =
+        carried.into_iter().map(|(centre, kind)| PlacedElement { kind, centre_mm: centre + offset }).collect();
+    Ok(Synthesized { paths, tangents, elements })
 }
 
 /// Which samples of `graph` lie within `tolerance_mm` of one of `paths`.
@@ -236,6 +279,37 @@ struct Level<'a, 'c> {
     last: bool,
 }
 
+/// What leaving a discrete element unmatched costs at spacing `delta_mm`:
+/// 1.5 times the mean distance from an element of `input` to its nearest
+/// fellow (the paper's choice, section 4.2.3), at least a path sample's
+/// cost and at most `radius_mm`. Elements lie far apart next to path
+/// samples; at a path sample's cost they were left unmatched by most
+/// neighbourhoods round them and removed, and fills held half the
+/// elements of their exemplars.
+fn element_unmatched_mm(input: &SampleGraph, delta_mm: f64, radius_mm: f64) -> f64 {
+    let mut centres = SampleGraph::default();
+    for (centre, kind) in input.elements() {
+        centres.add_element(centre, kind);
+    }
+    let floor = Similarity::new(delta_mm).element_unmatched_mm;
+    // A lone element has no fellow to space it: it costs the most.
+    if centres.samples.len() < 2 {
+        return radius_mm.max(floor);
+    }
+    let grid = SampleGrid::new(&centres, radius_mm);
+    let (low, high) = bounds(&centres);
+    let reach = (high - low).length() + 1.0;
+    let nearest: Vec<f64> = (0..centres.samples.len() as u32)
+        .filter_map(|s| {
+            let at = centres.samples[s as usize].position_mm;
+            grid.nearest_where(&centres, at, reach, &|t| t != s)
+                .map(|t| centres.samples[t as usize].position_mm.distance(at))
+        })
+        .collect();
+    let mean = nearest.iter().sum::<f64>() / nearest.len().max(1) as f64;
+    (1.5 * mean).clamp(floor, radius_mm.max(floor))
+}
+
 /// Search and assignment steps at one level.
 fn synthesize_level(
     input: &SampleGraph,
@@ -245,10 +319,11 @@ fn synthesize_level(
     rng: &mut SplitMix64,
 ) -> Result<SampleGraph, FillError> {
     let (size_mm, delta_mm, radius_mm) = (level.size_mm, level.delta_mm, level.radius_mm);
-    let similarity = Similarity::new(delta_mm);
+    let similarity = Similarity::new(delta_mm).with_element_unmatched(element_unmatched_mm(input, delta_mm, radius_mm));
     let project = |p: DVec2| p.clamp(DVec2::ZERO, size_mm);
     // The exemplar's neighbourhoods are the same at every step of a level.
     let input_near = Neighbourhoods::new(input, radius_mm);
+    let of_kind = KindIndex::new(input);
     let mut field: Option<NearestField> = start;
     for step in 0..level.iterations {
         level.control.check()?;
@@ -256,6 +331,7 @@ fn synthesize_level(
         let mut search_settings = SearchSettings::new(radius_mm, delta_mm);
         search_settings.iterations = if step == 0 { 5 } else { 2 };
         search_settings.seed = rng.state() ^ step as u64;
+        search_settings.element_unmatched_mm = similarity.element_unmatched_mm;
         // The output's, found once for the search and the votes that follow it.
         let output_near = Neighbourhoods::new(&output, radius_mm);
         let found = search((&output, &output_near), (input, &input_near), field.as_ref(), &search_settings);
@@ -301,9 +377,9 @@ fn synthesize_level(
         kept.retain(&keep);
         output.retain(&keep);
         // New samples join the field at random; the next search places them.
-        for p in added {
-            output.add_sample(p);
-            kept.input_of.push((rng.next_unit() * input.samples.len() as f64) as u32 % input.samples.len() as u32);
+        for (p, kind) in added {
+            output.add_of_kind(p, kind);
+            kept.input_of.push(of_kind.random(kind, rng));
             kept.cost.push(f64::MAX);
         }
         field = Some(kept);

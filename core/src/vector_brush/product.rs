@@ -8,7 +8,7 @@ use super::{
 use crate::Product;
 use crate::control::Control;
 use crate::curve::Along;
-use crate::geom::fill_triangles;
+use crate::geom::{Region, fill_triangles};
 use crate::mesh::extrude;
 use crate::product::{Fact, Facts, Overlays};
 use crate::quality::seam_kinks_deg;
@@ -158,6 +158,7 @@ pub(crate) fn to_product(
         fill_mm,
         region_mm: planar.region,
         paths_mm: Vec::new(),
+        filled_mm: Region::default(),
         path_ends_mm,
         mesh_mm: mesh,
         image: None,
