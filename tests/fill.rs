@@ -121,8 +121,15 @@ fn bad_input_fails_with_one_line_and_no_file() {
         r#"<svg xmlns="http://www.w3.org/2000/svg" width="320mm" height="320mm" viewBox="0 0 320 320"><circle cx="160" cy="160" r="150" fill="none" stroke="black"/></svg>"#,
     )
     .unwrap();
+    // One L-shaped band, a picture frame's corner: a single line.
+    let corner = dir.join("corner.svg");
+    std::fs::write(
+        &corner,
+        r#"<svg xmlns="http://www.w3.org/2000/svg" viewBox="0 0 200 200"><path d="M0,200 L0,0 L200,0 L200,10 L10,10 L10,200 Z"/></svg>"#,
+    )
+    .unwrap();
     let stl = dir.join("out.stl");
-    let cases: [(&[&str], &str); 8] = [
+    let cases: [(&[&str], &str); 9] = [
         (&["--exemplar", "waves", "--region", "circle:3"], "too small"),
         (&["--exemplar", "waves", "--region", "hexagon:3"], "not a region"),
         (&["--exemplar", "waves", "--region", &format!("svg:{}", path(&bow_tie))], "crosses itself"),
@@ -132,6 +139,7 @@ fn bad_input_fails_with_one_line_and_no_file() {
         // Waves shrunk to under a millimetre: finer than any sample spacing.
         (&["--exemplar", "waves", "--region", "rect:40x40", "--exemplar-scale", "0.02"], "nothing of the exemplar"),
         (&["--exemplar", &path(&ring), "--region", "rect:40x40"], "far larger than the 40 x 40 mm region"),
+        (&["--exemplar", &path(&corner), "--region", "rect:60x40", "--exemplar-scale", "0.3"], "only 1 line"),
     ];
     for (args, expected) in cases {
         let out = tracery().arg("fill").args(args).arg("--stl").arg(&stl).output().unwrap();

@@ -85,6 +85,17 @@ pub enum FillError {
         /// The finest sample spacing, mm.
         delta_mm: f64,
     },
+    /// Nothing survived, from an exemplar of one or two lines: nothing in
+    /// it repeats or meets for a pattern to learn.
+    #[error(
+        "nothing of the exemplar survived the fill: it is only {paths} line(s) (the longest {longest_mm:.0} mm), with nothing that repeats or meets for a pattern to learn; draw an exemplar of several curves"
+    )]
+    FewCurves {
+        /// Paths of the exemplar, as the fill learns it.
+        paths: usize,
+        /// The longest of them, mm.
+        longest_mm: f64,
+    },
     /// The solid could not be made.
     #[error("the print could not be made: {0}")]
     Mesh(#[from] MeshError),

@@ -101,10 +101,20 @@ pub fn print_drawn(
     finish(Predicted::default(), region, drawn, settings, control, Timings::default())
 }
 
+/// Exemplars of at most this many lines, and no elements, that fit the
+/// region yet leave nothing are blamed on their few lines, not their size.
+const FEW_CURVES: usize = 2;
+
 /// Why a fill of `bounds` kept nothing of `exemplar` drawn `scale` times larger.
 fn nothing_left(exemplar: &CurveExemplar, bounds: &Rect, scale: f64, settings: &Settings) -> FillError {
     let size = Rect::from_points(exemplar.paths.iter().flat_map(|p| p.points_mm.iter().copied()))
         .map_or(DVec2::ZERO, |b| b.size() * scale);
+    // Not far larger than the region (its own size, give or take half).
+    let fits = size.cmple(bounds.size() * 1.5).all();
+    if fits && exemplar.paths.len() <= FEW_CURVES && exemplar.elements.is_empty() {
+        let longest_mm = exemplar.paths.iter().map(CurvePath::length_mm).fold(0.0, f64::max) * scale;
+        return FillError::FewCurves { paths: exemplar.paths.len(), longest_mm };
+    }
     FillError::NothingSynthesized {
         exemplar_mm: [size.x, size.y],
         region_mm: [bounds.width(), bounds.height()],
@@ -243,6 +253,10 @@ fn predict_timed(
         let anchored = |p: DVec2| !(p.cmpgt(inner.min).all() && p.cmplt(inner.max).all()) || on_drawn(p);
         Ok::<_, FillError>(smooth_paths_oriented(&limits.remove_from(synthesized, anchored), &tangents))
     })?;
+    // Something was made, and all of it was loose.
+    if smooth.is_empty() && elements.is_empty() && drawn.is_empty() {
+        return Err(nothing_left(exemplar, &bounds, 1.0, settings));
+    }
     let paths = timings.time("clip", || clip_paths(&smooth, region, MIN_CLIPPED_SPACINGS * settings.delta_mm));
     let elements = timings
         .time("elements", || elements_within(&exemplar.elements.with_placed(elements), &exemplar.elements, region));
