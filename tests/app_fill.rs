@@ -258,3 +258,31 @@ fn a_curve_exemplar_imported_in_region_fill_is_what_the_fill_is_made_of() {
     let share = horizontal_share(&paths);
     assert!(share > 0.8, "only {share:.2} of the fill runs level like the rows");
 }
+
+#[test]
+fn berries_chosen_in_the_app_fill_with_whole_elements_inside_the_outline() {
+    let mut harness = harness(Vec::new());
+    harness.step();
+    choose_region_fill(&mut harness);
+    // The thumbnail and the name under it both read "berries": the name.
+    harness.query_all_by_label("berries").last().expect("the berries' name").scroll_to_me();
+    harness.run_steps(3);
+    harness.query_all_by_label("berries").last().expect("the berries' name").click();
+    harness.step();
+    let ModeSettings::RegionFill(item) = harness.state().settings() else { panic!("the controls left region fill") };
+    assert_eq!(item.exemplar.name(), "berries");
+    let id = draw_outline(&mut harness);
+    let product = harness.state().output(id).expect("a fill").clone();
+    let elements = &product.filled_mm.polygons;
+    assert!(elements.len() >= 5, "only {} elements", elements.len());
+    assert_eq!(product.facts.count("elements"), Some(elements.len()));
+    // Whole, and inside the outline drawn (its control polygon, with the
+    // same 2 mm allowance the paths get for smoothing the outline).
+    let outline = harness.state().doc.curve(id).unwrap().control_points();
+    let reach = outline.iter().map(|p| p.length()).fold(0.0, f64::max) + 2.0;
+    for shape in elements {
+        assert!(shape.outer.iter().all(|p| p.length() <= reach), "an element leaves the region");
+        let centre = shape.outer.iter().copied().sum::<DVec2>() / shape.outer.len() as f64;
+        assert!(inside(&shape.outer, centre), "an element is not a filled shape round its centre");
+    }
+}

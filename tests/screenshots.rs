@@ -178,3 +178,22 @@ fn regenerate_texture_screenshot() {
     settle_model(&mut harness);
     save(&mut harness, "texture.png");
 }
+
+#[test]
+#[ignore = "writes screenshots/; run on purpose"]
+fn regenerate_berries_screenshot() {
+    let mut harness = rendered_window();
+    harness.step();
+    harness.get_by_label("Mode").click();
+    harness.run_steps(2);
+    harness.get_by_label("Region fill").click();
+    harness.run_steps(2);
+    // The thumbnail and the name under it both read "berries": the name.
+    harness.query_all_by_label("berries").last().expect("the berries' name").scroll_to_me();
+    harness.run_steps(3);
+    harness.query_all_by_label("berries").last().expect("the berries' name").click();
+    harness.step();
+    drive::drag(&mut harness, &drive::circle(egui::pos2(775.0, 410.0), 150.0));
+    settle(&mut harness);
+    save(&mut harness, "fill-berries.png");
+}
