@@ -96,3 +96,37 @@ fn berries_fill_with_whole_elements_as_dense_as_the_exemplar() {
         assert!(product.mesh_mm.is_some());
     }
 }
+
+/// An exemplar of dots alone, two sizes in a staggered grid: a texture of
+/// discrete elements with no curve at all.
+#[test]
+fn dots_alone_fill_a_region_as_densely_and_never_overlap() {
+    let dots: String = (0..64)
+        .map(|k| {
+            let (i, j) = (k % 8, k / 8);
+            let (x, y) = (5.0 * i as f64 + 2.5 + 2.5 * (j % 2) as f64, 5.0 * j as f64 + 2.5);
+            let r = if (i + j) % 3 == 0 { 1.3 } else { 0.8 };
+            format!("<circle cx=\"{x}\" cy=\"{y}\" r=\"{r}\"/>")
+        })
+        .collect();
+    let svg = format!(r#"<svg xmlns="http://www.w3.org/2000/svg" viewBox="0 0 42 40">{dots}</svg>"#);
+    let exemplar = CurveExemplar::from_svg_data("dots", svg.as_bytes()).unwrap();
+    let settings = Settings::default();
+    let learned = exemplar.curves(settings.delta_mm);
+    assert!(learned.paths.is_empty() && learned.elements.kinds.len() == 2);
+    let ex_shapes = learned.elements.polygons();
+    let ex_bounds = Rect::from_points(ex_shapes.iter().flat_map(|s| s.outer.iter().copied())).unwrap();
+    let ex = element_statistics(&ex_shapes, &[], &ex_bounds, 0.0);
+    let region = parse_region("rect:50x35").unwrap();
+    let product = make_product(&exemplar, &region, &settings, &Control::default()).unwrap();
+    assert!(product.paths_mm.is_empty(), "no curve where the exemplar has none");
+    let out = element_statistics(&product.filled_mm.polygons, &[], &region.bounds().unwrap(), settings.radius_mm());
+    println!(
+        "dots: {:.2} per 100 mm² (exemplar {:.2}), {} overlapping",
+        out.per_100mm2, ex.per_100mm2, out.overlapping_pairs
+    );
+    assert!((out.per_100mm2 - ex.per_100mm2).abs() <= 0.3 * ex.per_100mm2, "{out:?} against {ex:?}");
+    assert_eq!(out.overlapping_pairs, 0);
+    // Every dot prints as a body of its own.
+    assert_eq!(product.topology.components, product.filled_mm.polygons.len());
+}
