@@ -234,7 +234,7 @@ fn predict_timed(
     };
     let drawn: Vec<CurvePath> = drawn.iter().filter(|p| near(p)).cloned().collect();
     let Synthesized { paths: mut synthesized, tangents, elements } = timings.time("synthesis", || {
-        synthesize_oriented(&exemplar.paths, &exemplar.elements, &bounds, &drawn, settings, control)
+        synthesize_oriented(&exemplar.paths, &exemplar.elements, (&bounds, Some(region)), &drawn, settings, control)
     })?;
     if synthesized.is_empty() && elements.is_empty() && drawn.is_empty() {
         return Err(nothing_left(exemplar, &bounds, 1.0, settings));

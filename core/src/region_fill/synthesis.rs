@@ -7,7 +7,7 @@ use glam::DVec2;
 use rayon::prelude::*;
 
 use crate::control::Control;
-use crate::geom::Rect;
+use crate::geom::{Rect, Region};
 use crate::random::SplitMix64;
 
 use super::assignment::{MatchedPair, assign_edges, assign_positions, existence_votes, missing_samples};
@@ -25,7 +25,7 @@ use super::{
 fn initialize(
     input: &SampleGraph,
     pinned: SampleGraph,
-    size_mm: DVec2,
+    (size_mm, mask): (DVec2, &Mask),
     patch_mm: f64,
     delta_mm: f64,
     rng: &mut SplitMix64,
@@ -53,7 +53,11 @@ fn initialize(
                     continue;
                 }
                 let at = target + local;
-                if at.x > size_mm.x || at.y > size_mm.y || !placed.within(&output, at, 0.5 * delta_mm).is_empty() {
+                if at.x > size_mm.x
+                    || at.y > size_mm.y
+                    || !mask.contains(at)
+                    || !placed.within(&output, at, 0.5 * delta_mm).is_empty()
+                {
                     continue;
                 }
                 // An element is copied whole: it is one sample.
@@ -64,6 +68,25 @@ fn initialize(
         }
     }
     (output, sources)
+}
+
+/// Where samples may lie, in the synthesis's frame: the whole rectangle,
+/// or the region grown by the finest neighbourhood's radius, so that the
+/// pattern along the region's edge is judged by whole neighbourhoods at
+/// the finest level (more than the rectangle's own edge gets) while
+/// nothing is made far outside it.
+enum Mask {
+    Everywhere,
+    Within(Region),
+}
+
+impl Mask {
+    fn contains(&self, p: DVec2) -> bool {
+        match self {
+            Mask::Everywhere => true,
+            Mask::Within(region) => region.contains(p),
+        }
+    }
 }
 
 fn bounds(graph: &SampleGraph) -> (DVec2, DVec2) {
@@ -150,7 +173,7 @@ pub fn synthesize_around(
     settings: &Settings,
     control: &Control,
 ) -> Result<Vec<CurvePath>, FillError> {
-    Ok(synthesize_oriented(exemplar, &Elements::default(), bounds, fixed, settings, control)?.paths)
+    Ok(synthesize_oriented(exemplar, &Elements::default(), (bounds, None), fixed, settings, control)?.paths)
 }
 
 /// What the synthesis made: its paths, the orientations of the final
@@ -168,17 +191,24 @@ pub struct Synthesized {
 /// As [`synthesize_around`], with the orientations of the final graph, and
 /// the discrete `elements` of the exemplar synthesized with its paths:
 /// each is one sample at its centre, at every level, matched only with
-/// elements of its kind (sections 4.1 and 4.2.3).
+/// elements of its kind (sections 4.1 and 4.2.3). With a `region` (mm,
+/// within `bounds`), samples are kept within it grown by the finest
+/// neighbourhood's radius: a round or drawn region is not synthesized over
+/// its whole bounding box.
 pub fn synthesize_oriented(
     exemplar: &[CurvePath],
     elements: &Elements,
-    bounds: &Rect,
+    (bounds, region): (&Rect, Option<&Region>),
     fixed: &[CurvePath],
     settings: &Settings,
     control: &Control,
 ) -> Result<Synthesized, FillError> {
     let size = bounds.size();
     let offset = bounds.min;
+    let mask = match region {
+        Some(region) => Mask::Within(crate::geom::offset(&region.translated(-offset), settings.radius_mm())),
+        None => Mask::Everywhere,
+    };
     let fixed: Vec<CurvePath> = fixed
         .iter()
         .map(|p| CurvePath { points_mm: p.points_mm.iter().map(|q| *q - offset).collect(), closed: p.closed })
@@ -199,7 +229,7 @@ pub fn synthesize_oriented(
             None => {
                 let pinned = SampleGraph::new(&fixed, delta)?;
                 let count = pinned.samples.len();
-                let (output, sources) = initialize(&input, pinned, size, 2.0 * radius, delta, &mut rng);
+                let (output, sources) = initialize(&input, pinned, (size, &mask), 2.0 * radius, delta, &mut rng);
                 (output, Some(sources), count)
             }
             Some(p) => {
@@ -216,6 +246,7 @@ pub fn synthesize_oriented(
         };
         let at = Level {
             size_mm: size,
+            mask: &mask,
             delta_mm: delta,
             radius_mm: radius,
             iterations: settings.iterations,
@@ -265,6 +296,8 @@ fn on_paths(graph: &SampleGraph, paths: &[CurvePath], tolerance_mm: f64) -> Vec<
 /// steps' place in the whole for progress.
 struct Level<'a, 'c> {
     size_mm: DVec2,
+    /// Where samples may lie.
+    mask: &'a Mask,
     delta_mm: f64,
     radius_mm: f64,
     iterations: usize,
@@ -357,7 +390,7 @@ fn synthesize_level(
             })
             .collect();
         assign_positions(&mut output, input, &pairs, level.pinned, &project);
-        let inside = |p: DVec2| p.cmpge(DVec2::ZERO).all() && p.cmple(size_mm).all();
+        let inside = |p: DVec2| p.cmpge(DVec2::ZERO).all() && p.cmple(size_mm).all() && level.mask.contains(p);
         let added = missing_samples(&output, input, &pairs, delta_mm, radius_mm, &inside);
         assign_edges(&mut output, input, &pairs, level.pinned);
         // Orientations only shape the reconstruction, which follows the
@@ -371,7 +404,7 @@ fn synthesize_level(
         let keep: Vec<bool> = existence_votes(output.samples.len(), &pairs)
             .iter()
             .enumerate()
-            .map(|(s, &i)| s < level.pinned || i >= 0.5)
+            .map(|(s, &i)| s < level.pinned || (i >= 0.5 && level.mask.contains(output.samples[s].position_mm)))
             .collect();
         let mut kept = found;
         kept.retain(&keep);
