@@ -114,12 +114,15 @@ fn list_curves() -> Result<()> {
     for name in tracery_core::region_fill::BUILTIN_CURVES {
         let exemplar = tracery_core::region_fill::CurveExemplar::builtin(name)
             .with_context(|| format!("drawing built-in '{name}'"))?;
-        let length: f64 = exemplar.paths.iter().map(|p| p.length_mm()).sum();
+        // A built-in's filled shapes' outlines come last among its paths: counted as shapes.
+        let outlines: usize = exemplar.shapes.iter().map(|s| s.polygon.rings().count()).sum();
+        let strokes = &exemplar.paths[..exemplar.paths.len() - outlines.min(exemplar.paths.len())];
+        let length: f64 = strokes.iter().map(|p| p.length_mm()).sum();
         let shapes = match exemplar.shapes.len() {
             0 => String::new(),
             n => format!(", {n} filled shape(s)"),
         };
-        println!("{name:10} {:3} path(s) {:6.0} mm of curve{shapes}", exemplar.paths.len(), length);
+        println!("{name:10} {:3} path(s) {:6.0} mm of curve{shapes}", strokes.len(), length);
     }
     Ok(())
 }
