@@ -131,9 +131,15 @@ pub fn centroid(polygon: &Polygon) -> DVec2 {
 /// Whether two shapes, each about its centroid, are alike within
 /// [`SAME_KIND_SHARE`] of the larger's diagonal.
 fn same_shape(a: &Polygon, b: &Polygon) -> bool {
-    let diagonal = |p: &Polygon| Rect::from_points(p.outer.iter().copied()).map_or(0.0, |r| r.size().length());
-    let tolerance = SAME_KIND_SHARE * diagonal(a).max(diagonal(b));
-    if a.holes.len() != b.holes.len() || (a.area() - b.area()).abs() > 2.0 * tolerance * diagonal(a).max(diagonal(b)) {
+    let size = |p: &Polygon| Rect::from_points(p.outer.iter().copied()).map_or(DVec2::ZERO, |r| r.size());
+    let (size_a, size_b) = (size(a), size(b));
+    let diagonal = size_a.length().max(size_b.length());
+    let tolerance = SAME_KIND_SHARE * diagonal;
+    // Cheap refusals first: an exemplar may hold hundreds of shapes.
+    if a.holes.len() != b.holes.len()
+        || (size_a - size_b).abs().max_element() > 2.0 * tolerance
+        || (a.area() - b.area()).abs() > 2.0 * tolerance * diagonal
+    {
         return false;
     }
     let near = |from: &Polygon, to: &Polygon| {
