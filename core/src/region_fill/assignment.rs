@@ -77,8 +77,8 @@ pub fn assign_positions(
 }
 
 /// Existence (equation 15): the share of the neighbourhoods holding a
-/// sample in which it was matched. Samples below one half are removed by
-/// [`SampleGraph::retain`].
+/// sample in which it was matched. The synthesis removes samples below
+/// its threshold by [`SampleGraph::retain`].
 pub fn existence_votes(samples: usize, pairs: &[MatchedPair]) -> Vec<f64> {
     let (mut held, mut matched) = (vec![0.0; samples], vec![0.0; samples]);
     for pair in pairs {
