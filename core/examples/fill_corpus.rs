@@ -250,10 +250,10 @@ fn draw_sheet(outcomes: &[(String, Outcome)], path: &str) {
         index += &format!("row {} col {}: {name}\n", row + 1, column + 1);
         let (ox, oy) = (column as f32 * tile_w + 2.0 * SCALE, row as f32 * tile_h + 2.0 * SCALE);
         let mut ink = Paint { anti_alias: true, ..Default::default() };
+        let at = |p: &tracery_core::DVec2| (ox + p.x as f32 * SCALE, oy + (REGION.1 - p.y) as f32 * SCALE);
         let paths = match outcome {
             Outcome::Filled { paths, elements, .. } => {
                 ink.set_color_rgba8(20, 20, 20, 255);
-                let at = |p: &tracery_core::DVec2| (ox + p.x as f32 * SCALE, oy + (REGION.1 - p.y) as f32 * SCALE);
                 for shape in &elements.shapes {
                     let rings: Vec<Vec<(f32, f32)>> = shape.rings().map(|r| r.iter().map(at).collect()).collect();
                     sheet::fill_rings(&mut sheet, &rings, &ink);
@@ -271,7 +271,6 @@ fn draw_sheet(outcomes: &[(String, Outcome)], path: &str) {
             }
         };
         for (points, closed) in &paths {
-            let at = |p: &tracery_core::DVec2| (ox + p.x as f32 * SCALE, oy + (REGION.1 - p.y) as f32 * SCALE);
             sheet::stroke_polyline(&mut sheet, points.iter().map(at), *closed, &ink, 1.0);
         }
     }

@@ -114,9 +114,8 @@ fn list_curves() -> Result<()> {
     for name in tracery_core::region_fill::BUILTIN_CURVES {
         let exemplar = tracery_core::region_fill::CurveExemplar::builtin(name)
             .with_context(|| format!("drawing built-in '{name}'"))?;
-        // A built-in's filled shapes' outlines come last among its paths: counted as shapes.
-        let outlines: usize = exemplar.shapes.iter().map(|s| s.polygon.rings().count()).sum();
-        let strokes = &exemplar.paths[..exemplar.paths.len() - outlines.min(exemplar.paths.len())];
+        // A built-in's filled shapes' outlines follow its strokes among its paths: counted as shapes.
+        let strokes = &exemplar.paths[..exemplar.shapes.first().map_or(exemplar.paths.len(), |s| s.first_path)];
         let length: f64 = strokes.iter().map(|p| p.length_mm()).sum();
         let shapes = match exemplar.shapes.len() {
             0 => String::new(),

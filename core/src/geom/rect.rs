@@ -58,6 +58,19 @@ impl Rect {
         Rect { min: self.min.min(other.min), max: self.max.max(other.max) }
     }
 
+    /// Whether the two rectangles share a point (touching counts).
+    ///
+    /// ```
+    /// use glam::DVec2;
+    /// use tracery_core::geom::Rect;
+    /// let unit = Rect::new(DVec2::ZERO, DVec2::ONE);
+    /// assert!(unit.overlaps(&Rect::new(DVec2::ONE, DVec2::splat(2.0))));
+    /// assert!(!unit.overlaps(&Rect::new(DVec2::new(1.5, 0.0), DVec2::splat(2.0))));
+    /// ```
+    pub fn overlaps(&self, other: &Rect) -> bool {
+        self.max.cmpge(other.min).all() && other.max.cmpge(self.min).all()
+    }
+
     /// The rectangle grown by `margin` on every side.
     pub fn inflate(&self, margin: f64) -> Rect {
         Rect { min: self.min - DVec2::splat(margin), max: self.max + DVec2::splat(margin) }

@@ -49,14 +49,14 @@ pub fn element_statistics(
     let centre = |p: &Polygon| p.outer.iter().copied().sum::<DVec2>() / p.outer.len().max(1) as f64;
     let inside = |p: DVec2| p.cmpge(window.min).all() && p.cmple(window.max).all();
     let boxes: Vec<Option<Rect>> = elements.iter().map(|e| Rect::from_points(e.outer.iter().copied())).collect();
-    let counted: Vec<usize> = (0..elements.len()).filter(|&k| inside(centre(&elements[k]))).collect();
+    let in_window: Vec<bool> = elements.iter().map(|e| inside(centre(e))).collect();
+    let counted: Vec<usize> = (0..elements.len()).filter(|&k| in_window[k]).collect();
     let mut overlapping_pairs = 0;
     for a in 0..elements.len() {
         for b in a + 1..elements.len() {
             let (Some(ba), Some(bb)) = (boxes[a], boxes[b]) else { continue };
-            let apart = ba.max.cmplt(bb.min).any() || bb.max.cmplt(ba.min).any();
-            let counts = inside(centre(&elements[a])) || inside(centre(&elements[b]));
-            if !apart && counts && overlap(&elements[a], &elements[b]) {
+            let counts = in_window[a] || in_window[b];
+            if ba.overlaps(&bb) && counts && overlap(&elements[a], &elements[b]) {
                 overlapping_pairs += 1;
             }
         }

@@ -228,10 +228,7 @@ fn predict_timed(
     let bounds = region.bounds().ok_or(FillError::EmptyRegion)?;
     // Only what lies within the coarsest neighbourhood of the bounds is context.
     let reach = bounds.inflate(settings.radius_mm() * 4.0);
-    let near = |p: &CurvePath| {
-        Rect::from_points(p.points_mm.iter().copied())
-            .is_some_and(|b| b.max.cmpge(reach.min).all() && b.min.cmple(reach.max).all())
-    };
+    let near = |p: &CurvePath| Rect::from_points(p.points_mm.iter().copied()).is_some_and(|b| b.overlaps(&reach));
     let drawn: Vec<CurvePath> = drawn.iter().filter(|p| near(p)).cloned().collect();
     let Synthesized { paths: mut synthesized, tangents, elements } = timings.time("synthesis", || {
         synthesize_oriented(&exemplar.paths, &exemplar.elements, (&bounds, Some(region)), &drawn, settings, control)
@@ -290,7 +287,7 @@ fn overlapping(a: &Polygon, b: &Polygon) -> bool {
     else {
         return false;
     };
-    if ba.max.cmplt(bb.min).any() || bb.max.cmplt(ba.min).any() {
+    if !ba.overlaps(&bb) {
         return false;
     }
     let shared = intersection(&Region::new(vec![a.clone()]), &Region::new(vec![b.clone()])).area();

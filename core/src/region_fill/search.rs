@@ -53,6 +53,38 @@ impl SearchSettings {
     }
 }
 
+/// The input samples of each kind (paths, or each kind of element), for
+/// starting an output sample's search at a random sample it may match.
+pub(super) struct KindIndex {
+    by_kind: rustc_hash::FxHashMap<Option<u32>, Vec<u32>>,
+    /// Samples in all.
+    samples: usize,
+}
+
+impl KindIndex {
+    pub(super) fn new(input: &SampleGraph) -> KindIndex {
+        let mut by_kind: rustc_hash::FxHashMap<Option<u32>, Vec<u32>> = Default::default();
+        for (s, sample) in input.samples.iter().enumerate() {
+            by_kind.entry(sample.element).or_default().push(s as u32);
+        }
+        KindIndex { by_kind, samples: input.samples.len() }
+    }
+
+    /// The input samples of kind `kind`, if there are any.
+    pub(super) fn of(&self, kind: Option<u32>) -> Option<&[u32]> {
+        self.by_kind.get(&kind).map(Vec::as_slice)
+    }
+
+    /// A random input sample of kind `kind`; any sample if there is none.
+    pub(super) fn random(&self, kind: Option<u32>, rng: &mut SplitMix64) -> u32 {
+        let all = self.samples.max(1);
+        match self.of(kind) {
+            Some(of_kind) => of_kind[(rng.next_unit() * of_kind.len() as f64) as usize % of_kind.len()],
+            None => (rng.next_unit() * all as f64) as u32 % all as u32,
+        }
+    }
+}
+
 /// The nearest-neighbour field: for each output sample, its input sample
 /// and the cost of their neighbourhoods' match.
 #[derive(Clone, Debug, Default, PartialEq)]
@@ -126,10 +158,7 @@ pub fn search(
     let nearest_input = |p: DVec2, reach_mm: f64, kind: Option<u32>| {
         input_near.grid.nearest_where(input, p, reach_mm, &|s| input.samples[s as usize].element == kind)
     };
-    let mut of_kind: rustc_hash::FxHashMap<Option<u32>, Vec<u32>> = Default::default();
-    for (s, sample) in input.samples.iter().enumerate() {
-        of_kind.entry(sample.element).or_default().push(s as u32);
-    }
+    let of_kind = KindIndex::new(input);
     let nearest: Vec<Vec<u32>> = (0..n_out)
         .map(|s| {
             let reach = 2.0 * settings.radius_mm;
@@ -165,7 +194,7 @@ pub fn search(
         _ => {
             // At random, among the inputs of each output sample's kind.
             let input_of: Vec<u32> = (0..n_out)
-                .map(|o| match of_kind.get(&output.samples[o].element) {
+                .map(|o| match of_kind.of(output.samples[o].element) {
                     Some(like) => like[stream.below(like.len() as u64) as usize],
                     None => stream.below(input.samples.len() as u64) as u32,
                 })

@@ -11,6 +11,7 @@ use crate::geom::{Rect, Region};
 use crate::random::SplitMix64;
 
 use super::assignment::{MatchedPair, assign_edges, assign_positions, existence_votes, missing_samples};
+use super::search::KindIndex;
 use super::{
     CurvePath, EdgeTangents, Elements, FillError, JOIN_TOLERANCE_MM, LEVELS, NearestField, NeighbourhoodPair,
     Neighbourhoods, PlacedElement, SampleGraph, SampleGrid, SearchSettings, Settings, Similarity, assign_orientations,
@@ -125,29 +126,6 @@ pub fn synthesize(
     synthesize_around(exemplar, bounds, &[], settings, control)
 }
 
-/// The input samples of each kind (paths, or each kind of element), for
-/// starting an output sample's search at a random sample it may match.
-struct KindIndex(rustc_hash::FxHashMap<Option<u32>, Vec<u32>>);
-
-impl KindIndex {
-    fn new(input: &SampleGraph) -> KindIndex {
-        let mut by_kind: rustc_hash::FxHashMap<Option<u32>, Vec<u32>> = Default::default();
-        for (s, sample) in input.samples.iter().enumerate() {
-            by_kind.entry(sample.element).or_default().push(s as u32);
-        }
-        KindIndex(by_kind)
-    }
-
-    /// A random input sample of kind `kind`; any sample if there is none.
-    fn random(&self, kind: Option<u32>, rng: &mut SplitMix64) -> u32 {
-        let all = self.0.values().flatten().count().max(1);
-        match self.0.get(&kind) {
-            Some(of_kind) => of_kind[(rng.next_unit() * of_kind.len() as f64) as usize % of_kind.len()],
-            None => (rng.next_unit() * all as f64) as u32 % all as u32,
-        }
-    }
-}
-
 /// As [`synthesize`], around paths already drawn (`fixed`, mm): their
 /// samples take part in every neighbourhood but never move, vanish or lose
 /// an edge, so the texture grows out of them and joins them (the paper's
@@ -213,6 +191,7 @@ pub fn synthesize_oriented(
         .iter()
         .map(|p| CurvePath { points_mm: p.points_mm.iter().map(|q| *q - offset).collect(), closed: p.closed })
         .collect();
+    let element_spacing_mm = element_spacing_mm(elements, settings.radius_mm());
     let mut rng = SplitMix64::new(settings.seed);
     let mut paths: Option<Vec<CurvePath>> = None;
     let mut carried: Vec<(DVec2, u32)> = Vec::new();
@@ -255,6 +234,7 @@ pub fn synthesize_oriented(
             done: (level * settings.iterations) as f32,
             steps,
             last: level + 1 == LEVELS,
+            element_spacing_mm,
         };
         let mut output = synthesize_level(&input, output, start, &at, &mut rng)?;
         // What was drawn is added back whole at the next level: only the new
@@ -318,26 +298,37 @@ struct Level<'a, 'c> {
     steps: f32,
     /// Whether this is the finest level, whose orientations reconstruction reads.
     last: bool,
+    /// The exemplar's [`element_spacing_mm`].
+    element_spacing_mm: Option<f64>,
 }
 
-/// What leaving a discrete element unmatched costs at spacing `delta_mm`:
-/// 1.5 times the mean distance from an element of `input` to its nearest
-/// fellow (the paper's choice, section 4.2.3), at least a path sample's
-/// cost and at most `radius_mm`. Elements lie far apart next to path
-/// samples; at a path sample's cost they were left unmatched by most
-/// neighbourhoods round them and removed, and fills held half the
-/// elements of their exemplars.
-fn element_unmatched_mm(input: &SampleGraph, delta_mm: f64, radius_mm: f64) -> f64 {
+impl Level<'_, '_> {
+    /// What leaving a discrete element unmatched costs: 1.5 times the mean
+    /// distance from an element to its nearest fellow (the paper's choice,
+    /// section 4.2.3), at least a path sample's cost and at most the
+    /// radius; a lone element, with no fellow to space it, costs the most.
+    /// Elements lie far apart next to path samples; at a path sample's cost
+    /// they were left unmatched by most neighbourhoods round them and
+    /// removed, and fills held half the elements of their exemplars.
+    fn element_unmatched_mm(&self) -> f64 {
+        let floor = Similarity::new(self.delta_mm).element_unmatched_mm;
+        let most = self.radius_mm.max(floor);
+        self.element_spacing_mm.map_or(most, |spacing| (1.5 * spacing).clamp(floor, most))
+    }
+}
+
+/// The mean distance from an element to its nearest fellow, mm; `None`
+/// with fewer than two elements. Read once per synthesis, for
+/// [`Level::element_unmatched_mm`].
+fn element_spacing_mm(elements: &Elements, cell_mm: f64) -> Option<f64> {
+    if elements.placed.len() < 2 {
+        return None;
+    }
     let mut centres = SampleGraph::default();
-    for (centre, kind) in input.elements() {
-        centres.add_element(centre, kind);
+    for e in &elements.placed {
+        centres.add_element(e.centre_mm, e.kind);
     }
-    let floor = Similarity::new(delta_mm).element_unmatched_mm;
-    // A lone element has no fellow to space it: it costs the most.
-    if centres.samples.len() < 2 {
-        return radius_mm.max(floor);
-    }
-    let grid = SampleGrid::new(&centres, radius_mm);
+    let grid = SampleGrid::new(&centres, cell_mm);
     let (low, high) = bounds(&centres);
     let reach = (high - low).length() + 1.0;
     let nearest: Vec<f64> = (0..centres.samples.len() as u32)
@@ -347,8 +338,7 @@ fn element_unmatched_mm(input: &SampleGraph, delta_mm: f64, radius_mm: f64) -> f
                 .map(|t| centres.samples[t as usize].position_mm.distance(at))
         })
         .collect();
-    let mean = nearest.iter().sum::<f64>() / nearest.len().max(1) as f64;
-    (1.5 * mean).clamp(floor, radius_mm.max(floor))
+    Some(nearest.iter().sum::<f64>() / nearest.len().max(1) as f64)
 }
 
 /// Search and assignment steps at one level.
@@ -360,7 +350,7 @@ fn synthesize_level(
     rng: &mut SplitMix64,
 ) -> Result<SampleGraph, FillError> {
     let (size_mm, delta_mm, radius_mm) = (level.size_mm, level.delta_mm, level.radius_mm);
-    let similarity = Similarity::new(delta_mm).with_element_unmatched(element_unmatched_mm(input, delta_mm, radius_mm));
+    let similarity = Similarity::new(delta_mm).with_element_unmatched(level.element_unmatched_mm());
     let project = |p: DVec2| p.clamp(DVec2::ZERO, size_mm);
     // The exemplar's neighbourhoods are the same at every step of a level.
     let input_near = Neighbourhoods::new(input, radius_mm);
