@@ -37,6 +37,7 @@ fn a_plane_of_rivets_is_one_closed_body_per_element() {
     let elements: usize = field(&json, "elements").parse().unwrap();
     assert_eq!(check.shells, elements, "{json}");
     assert_eq!(field(&json, "closed_elements"), field(&json, "elements"), "{json}");
+    assert_eq!(field(&json, "self_crossing_elements"), "0", "{json}");
     assert!(elements >= 25, "{json}");
     assert!(json.contains("\"timings_ms\"") && json.contains("\"warnings\""), "{json}");
     // Elements lie on the plane's area, give or take half an element.

@@ -8,7 +8,7 @@ use std::time::Instant;
 
 use tracery_core::control::Control;
 use tracery_core::export::write_stl;
-use tracery_core::mesh_quilt::{SWATCH_NAMES, Settings, builtin_swatch, quilt_plane};
+use tracery_core::mesh_quilt::{SWATCH_NAMES, Settings, builtin_swatch, crosses_itself, quilt_plane};
 
 fn main() {
     let args: Vec<String> = std::env::args().collect();
@@ -23,8 +23,9 @@ fn main() {
         let ms = start.elapsed().as_secs_f64() * 1000.0;
         let faces: usize = quilt.elements.iter().map(|e| e.triangles.len()).sum();
         let open = quilt.elements.iter().filter(|e| !e.is_closed()).count();
+        let crossing = quilt.elements.iter().filter(|e| crosses_itself(e)).count();
         println!(
-            "{name:10} {width:.0}x{depth:.0} mm: {:5.0} ms, {} patches, {} elements ({open} open), {faces} faces; {:?}, outside {}, fragments {}",
+            "{name:10} {width:.0}x{depth:.0} mm: {:5.0} ms, {} patches, {} elements ({open} open, {crossing} crossing), {faces} faces; {:?}, outside {}, fragments {}",
             ms,
             quilt.counts.patches,
             quilt.elements.len(),

@@ -6,7 +6,7 @@ use std::time::Instant;
 use tracery_core::control::Control;
 use tracery_core::export::write_stl;
 use tracery_core::mesh::Mesh;
-use tracery_core::mesh_quilt::{GuidanceField, Settings, builtin_swatch, quilt_surface};
+use tracery_core::mesh_quilt::{GuidanceField, Settings, builtin_swatch, crosses_itself, quilt_surface};
 use tracery_core::surface::{SurfaceMesh, builtin_base};
 
 fn main() {
@@ -30,11 +30,12 @@ fn main() {
         mesh.append(&e.to_mesh());
     }
     println!(
-        "{base} + {}: {} ms, {} patches, {} elements, {} faces; {:?}; {:?}",
+        "{base} + {}: {} ms, {} patches, {} elements ({} crossing), {} faces; {:?}; {:?}",
         swatch.name,
         start.elapsed().as_millis(),
         quilt.counts.patches,
         quilt.elements.len(),
+        quilt.elements.iter().filter(|e| crosses_itself(e)).count(),
         mesh.triangles.len(),
         quilt.counts.merges,
         quilt.shell

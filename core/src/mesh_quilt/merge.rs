@@ -10,6 +10,7 @@ use glam::DVec3;
 use super::cut::{FORCED, min_cut_keep};
 use super::deform::{Constraint, deform};
 use super::faces::Faces;
+use super::self_crossing::crosses_itself;
 use super::stitch::stitch;
 use super::zones::{Zone, Zones, boxes_overlap};
 use super::{Element, Settings};
@@ -28,6 +29,10 @@ const WORK_CELLS: f64 = 2.0;
 /// Parts of a cut element with fewer triangles are specks of the cut, not
 /// pieces of the element.
 const SPECK_TRIANGLES: usize = 12;
+
+/// The gap left between the two pieces of a stitch, in the swatch
+/// element's mean edge lengths, for the strip to bridge.
+const SEAM_GAP_EDGES: f64 = 1.0;
 
 /// What merging did, summed over patches.
 #[derive(Clone, Debug, Default, PartialEq, Eq)]
@@ -235,7 +240,10 @@ fn merge_pair(
     let fixed: Vec<bool> = c_out.vertices.iter().map(|&v| !grid.near_footprint(v, WORK_CELLS)).collect();
     meet(&mut c_out, to_in, |v| !grid.zone(v).in_patch(), &fixed, mu);
     let free = vec![false; c_in.vertices.len()];
-    meet(&mut c_in, to_out, |v| grid.zone(v) == Zone::New, &free, mu);
+    // The swatch's element is held where it stays: its new part, and any
+    // part beyond the area, which nothing else holds and which would
+    // otherwise swing about the seam like a lever.
+    meet(&mut c_in, to_out, |v| matches!(grid.zone(v), Zone::New | Zone::Outside), &free, mu);
     match cut_and_stitch(&c_out, &c_in, grid, reach_mm) {
         Some(joined) => {
             counts.stitched += 1;
@@ -329,11 +337,20 @@ fn cut_and_stitch(c_out: &Element, c_in: &Element, grid: &impl Zones, reach_mm: 
         })
         .collect();
     let a = without_specks(c_out.subset(|f| kept_out[f]));
-    let b = without_specks(c_in.subset(|f| kept_in[f]));
+    // Where the two surfaces lie together, the swatch's faces just past the
+    // cut interleave with the output's: a strip zipped between them would
+    // fold through both. A gap of a few edges between the pieces leaves
+    // the strip a clean band to bridge.
+    let gap_mm = SEAM_GAP_EDGES * c_in.mean_edge_mm();
+    let kept_a = Faces::new([&a]);
+    let clear = |v: u32| kept_a.closest(c_in.vertices[v as usize]).is_none_or(|h| h.distance_mm > gap_mm);
+    let b = without_specks(c_in.subset(|f| kept_in[f] && c_in.triangles[f].iter().all(|&v| clear(v))));
     if a.triangles.is_empty() || b.triangles.is_empty() {
         return None;
     }
-    stitch(&a, &b, 3.0 * reach_mm)
+    // A stitch that passes through itself would print wrong and make the
+    // booleans refuse the print: the pair is left unstitched instead.
+    stitch(&a, &b, 3.0 * reach_mm).filter(|joined| !crosses_itself(joined))
 }
 
 fn without_specks(element: Element) -> Element {

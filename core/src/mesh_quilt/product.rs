@@ -1,7 +1,9 @@
 //! [`make_product`]: a quilt as the [`Product`] every mode returns, its
 //! elements one mesh of separate closed shells, with its figures.
 
-use super::{Element, GuidanceField, Quilt, QuiltError, Settings, Swatch, quilt_plane, quilt_surface, trim_below};
+use super::{
+    Element, GuidanceField, Quilt, QuiltError, Settings, Swatch, crosses_itself, quilt_plane, quilt_surface, trim_below,
+};
 use crate::control::Control;
 use crate::mesh::Mesh;
 use crate::product::{Fact, Product};
@@ -128,11 +130,15 @@ fn describe(product: &mut Product, quilt: &Quilt, swatch: &Swatch) {
         mesh.append(&e.to_mesh());
     }
     let closed = quilt.elements.iter().filter(|e| e.is_closed()).count();
+    // Stitches that would pass through themselves are refused, but the
+    // shell's bending on a curved base is not: the count says so.
+    let self_crossing = quilt.elements.iter().filter(|e| crosses_itself(e)).count();
     let m = &quilt.counts.merges;
     product.topology.components = quilt.elements.len();
     let facts = &mut product.facts;
     facts.push("elements", Fact::Count(quilt.elements.len()));
     facts.push("closed_elements", Fact::Count(closed));
+    facts.push("self_crossing_elements", Fact::Count(self_crossing));
     facts.push("swatch_elements", Fact::Count(swatch.elements.len()));
     facts.push("patches", Fact::Count(quilt.counts.patches));
     facts.push("stitched", Fact::Count(m.stitched));
