@@ -47,6 +47,32 @@ fn a_plane_of_rivets_is_one_closed_body_per_element() {
 }
 
 #[test]
+fn woven_threads_end_flat_at_the_edge_of_the_plane() {
+    let dir = tempdir("quilt-weave-edge");
+    let stl = dir.join("w.stl");
+    let json =
+        report_of("quilt", &["--swatch", "weave", "--base", "plane:30x24", "--stl", &path(&stl)], &dir.join("w.json"));
+    let check = check_stl(&stl);
+    assert_eq!((check.open_edges, check.misoriented_edges), (0, 0), "{check:?}");
+    assert_eq!(check.shells.to_string(), field(&json, "elements"), "{json}");
+    assert!(field(&json, "cut_at_edge").parse::<usize>().unwrap() > 0, "{json}");
+    // Threads are cut at the area's sides: nothing overhangs them, and
+    // the cut ends reach them.
+    let vertices = stl_vertices(&stl);
+    for &[x, y, _] in &vertices {
+        assert!((-1e-4..=30.0001).contains(&x) && (-1e-4..=24.0001).contains(&y), "vertex at ({x}, {y})");
+    }
+    for (reach, side) in [
+        (vertices.iter().map(|v| v[0]).fold(f64::MAX, f64::min), 0.0),
+        (vertices.iter().map(|v| v[0]).fold(f64::MIN, f64::max), 30.0),
+        (vertices.iter().map(|v| v[1]).fold(f64::MAX, f64::min), 0.0),
+        (vertices.iter().map(|v| v[1]).fold(f64::MIN, f64::max), 24.0),
+    ] {
+        assert!((reach - side).abs() < 1e-3, "the weave reaches {reach} on the side at {side}");
+    }
+}
+
+#[test]
 fn rivets_united_with_a_model_are_one_body_standing_on_the_bed() {
     let dir = tempdir("quilt-united");
     // The vase at the default scale once failed to unite: a stitched rivet

@@ -25,7 +25,7 @@ pub struct Trimmed {
 }
 
 /// A closed box from `lo` to `hi`, faces out.
-fn cuboid(lo: DVec3, hi: DVec3) -> Mesh {
+pub(super) fn cuboid(lo: DVec3, hi: DVec3) -> Mesh {
     let vertices = (0..8)
         .map(|k| {
             [

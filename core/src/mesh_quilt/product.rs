@@ -2,7 +2,8 @@
 //! elements one mesh of separate closed shells, with its figures.
 
 use super::{
-    Element, GuidanceField, Quilt, QuiltError, Settings, Swatch, crosses_itself, quilt_plane, quilt_surface, trim_below,
+    Element, GuidanceField, Quilt, QuiltError, Settings, Swatch, crosses_itself, quilt_plane, quilt_surface,
+    trim_below, trim_to_area,
 };
 use crate::control::Control;
 use crate::mesh::Mesh;
@@ -56,8 +57,16 @@ pub fn make_product(
     let mut product = Product::default();
     let swatch = swatch.scaled(settings.scale);
     let Base::Plane { width_mm, depth_mm } = base;
-    let quilt = product.timings.time("quilt", || quilt_plane(&swatch, width_mm, depth_mm, settings, control))?;
+    let mut quilt = product.timings.time("quilt", || quilt_plane(&swatch, width_mm, depth_mm, settings, control))?;
+    // What is left of a thread past the edge is kept when it is at least
+    // what the quilt keeps of any fragment: a quarter of the smallest
+    // swatch element.
+    let smallest = swatch.elements.iter().map(|e| e.to_mesh().signed_volume().abs()).fold(f64::INFINITY, f64::min);
+    let trimmed =
+        product.timings.time("edge", || trim_to_area(&mut quilt.elements, width_mm, depth_mm, 0.25 * smallest))?;
     describe(&mut product, &quilt, &swatch);
+    product.facts.push("cut_at_edge", Fact::Count(trimmed.cut));
+    product.facts.push("removed_at_edge", Fact::Count(trimmed.crumbs));
     Ok(product)
 }
 
