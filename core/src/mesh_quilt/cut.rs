@@ -1,10 +1,12 @@
 //! The graph cut that decides which triangles of an element stay (the
 //! paper's section 2.7): a minimum cut on the dual graph, through
-//! `pathfinding`'s Edmonds–Karp.
+//! `petgraph`'s Dinic maximum flow.
 
 use std::collections::{HashMap, VecDeque};
 
-use pathfinding::directed::edmonds_karp::edmonds_karp_sparse;
+use petgraph::algo::dinics;
+use petgraph::graph::{DiGraph, NodeIndex};
+use petgraph::visit::EdgeRef;
 
 /// Capacity that stands for "never cut": larger than any sum of edge weights.
 pub const FORCED: i64 = 1 << 40;
@@ -42,34 +44,39 @@ pub fn min_cut_keep(
         let cap = caps.entry((t as usize, sink)).or_default();
         *cap = (*cap + w).min(FORCED);
     }
-    let nodes: Vec<usize> = (0..triangles + 2).collect();
-    let edges: Vec<((usize, usize), i64)> = {
-        let mut e: Vec<_> = caps.iter().map(|(&k, &c)| (k, c)).collect();
-        e.sort_unstable();
-        e
-    };
-    let (flows, total, _) = edmonds_karp_sparse(&nodes, &source, &sink, edges);
-    if total >= FORCED {
+    // Capacities as petgraph's measures, which are unsigned; in a fixed
+    // order, so the cut is the same on every run.
+    let mut edges: Vec<((usize, usize), i64)> = caps.into_iter().collect();
+    edges.sort_unstable();
+    let mut graph: DiGraph<(), u64> = DiGraph::with_capacity(triangles + 2, edges.len());
+    for _ in 0..triangles + 2 {
+        graph.add_node(());
+    }
+    for &((u, v), c) in &edges {
+        graph.add_edge(NodeIndex::new(u), NodeIndex::new(v), c.max(0) as u64);
+    }
+    let (total, flows) = dinics(&graph, NodeIndex::new(source), NodeIndex::new(sink));
+    if total >= FORCED as u64 {
         return None;
     }
-    let mut net: HashMap<(usize, usize), i64> = HashMap::new();
-    for ((u, v), f) in flows {
-        *net.entry((u, v)).or_default() += f;
-        *net.entry((v, u)).or_default() -= f;
-    }
-    let mut adjacent: Vec<Vec<usize>> = vec![Vec::new(); triangles + 2];
-    for &(u, v) in caps.keys() {
-        adjacent[u].push(v);
-        adjacent[v].push(u);
-    }
-    let residual =
-        |u: usize, v: usize| caps.get(&(u, v)).copied().unwrap_or(0) - net.get(&(u, v)).copied().unwrap_or(0);
+    // The source's side: what it still reaches through edges with room
+    // left, or back along edges carrying flow.
     let mut reached = vec![false; triangles + 2];
     reached[source] = true;
     let mut queue = VecDeque::from([source]);
     while let Some(u) = queue.pop_front() {
-        for &v in &adjacent[u] {
-            if !reached[v] && residual(u, v) > 0 {
+        let node = NodeIndex::new(u);
+        let forward = graph
+            .edges_directed(node, petgraph::Direction::Outgoing)
+            .filter(|e| flows[e.id().index()] < *e.weight())
+            .map(|e| e.target().index());
+        let backward = graph
+            .edges_directed(node, petgraph::Direction::Incoming)
+            .filter(|e| flows[e.id().index()] > 0)
+            .map(|e| e.source().index());
+        let next: Vec<usize> = forward.chain(backward).collect();
+        for v in next {
+            if !reached[v] {
                 reached[v] = true;
                 queue.push_back(v);
             }

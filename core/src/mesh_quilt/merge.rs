@@ -274,9 +274,12 @@ fn cut_and_stitch(c_out: &Element, c_in: &Element, grid: &impl Zones, reach_mm: 
     let out_faces = Faces::new([&c_out.subset(|f| is_nearby[f])]);
     let in_faces = Faces::new([c_in]);
     // The swatch's faces that the output covers, and the frontier of them.
-    let matched: Vec<bool> = (0..c_in.triangles.len())
-        .map(|f| out_faces.closest(c_in.face_centre(f)).is_some_and(|h| h.distance_mm <= reach_mm))
+    // Each swatch face's closest output face, asked once: it says both what
+    // the output covers and, after the cut, what of the swatch stays.
+    let over: Vec<Option<u32>> = (0..c_in.triangles.len())
+        .map(|f| out_faces.closest(c_in.face_centre(f)).filter(|h| h.distance_mm <= reach_mm).map(|h| h.face))
         .collect();
+    let matched: Vec<bool> = over.iter().map(Option::is_some).collect();
     let in_neighbours = c_in.face_neighbours();
     let frontier: Vec<bool> = (0..c_in.triangles.len())
         .map(|f| matched[f] && in_neighbours[f].iter().any(|&g| !matched[g as usize]))
@@ -330,12 +333,8 @@ fn cut_and_stitch(c_out: &Element, c_in: &Element, grid: &impl Zones, reach_mm: 
         kept_out[f as usize] = cut[k];
     }
     // The swatch's element stays wherever the output's does not.
-    let kept_in: Vec<bool> = (0..c_in.triangles.len())
-        .map(|f| match out_faces.closest(c_in.face_centre(f)) {
-            Some(h) if h.distance_mm <= reach_mm => !kept_out[nearby[h.face as usize] as usize],
-            _ => true,
-        })
-        .collect();
+    let kept_in: Vec<bool> =
+        over.iter().map(|h| h.is_none_or(|face| !kept_out[nearby[face as usize] as usize])).collect();
     let a = without_specks(c_out.subset(|f| kept_out[f]));
     // Where the two surfaces lie together, the swatch's faces just past the
     // cut interleave with the output's: a strip zipped between them would
