@@ -17,7 +17,7 @@ use rustc_hash::FxHashMap;
 
 use glam::{DVec2, DVec3};
 
-use super::faces::Faces;
+use super::faces::{ElementFaces, Faces};
 use super::matching::{Input, MARGIN_CELLS, Neighbourhood, best_translation, reach_mm, thin};
 use super::merge::merge_patch;
 use super::patch::{FaceGraph, Patch, triangle_area_3d};
@@ -155,6 +155,7 @@ pub fn quilt_surface(
     let radius_mm = (sx as f64).hypot(sy as f64) * cell_mm + 2.0 * reach;
     let mut random = SplitMix64::new(settings.seed);
     let mut quilt = Quilt::default();
+    let mut output_faces = ElementFaces::default();
     let total = processed.len() as f32;
     let closest = Closest::new(surface);
     // The seed sits at the middle of cell (0, 0) of its patch.
@@ -235,7 +236,7 @@ pub fn quilt_surface(
                 Some(Element { vertices: vertices?, triangles: e.triangles.clone() })
             })
             .collect();
-        let counts = merge_patch(&mut quilt.elements, placed, &zones, settings, reach);
+        let counts = merge_patch(&mut quilt.elements, &mut output_faces, placed, &zones, settings, reach);
         quilt.counts.merges.add(&counts);
         for &f in &claimed_faces {
             processed[f as usize] = true;

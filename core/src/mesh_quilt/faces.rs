@@ -61,15 +61,32 @@ impl Faces {
         let bvh = self.bvh.as_ref()?;
         let (projection, (face, _)) =
             bvh.project_local_point_and_get_location(PVector::new(query_mm.x, query_mm.y, query_mm.z), false);
-        let point_mm = DVec3::new(projection.point.x, projection.point.y, projection.point.z);
+        Some(self.closest_at(query_mm, projection.point, face))
+    }
+
+    /// The closest point to `query_mm` no farther than `max_mm`: the search
+    /// leaves out every branch of the hierarchy farther away, so it is
+    /// cheap where nothing is near.
+    pub fn closest_within(&self, query_mm: DVec3, max_mm: f64) -> Option<Closest> {
+        let bvh = self.bvh.as_ref()?;
+        let (projection, (face, _)) = bvh.project_local_point_and_get_location_with_max_dist(
+            PVector::new(query_mm.x, query_mm.y, query_mm.z),
+            false,
+            max_mm,
+        )?;
+        Some(self.closest_at(query_mm, projection.point, face)).filter(|h| h.distance_mm <= max_mm)
+    }
+
+    fn closest_at(&self, query_mm: DVec3, point: PVector, face: u32) -> Closest {
+        let point_mm = DVec3::new(point.x, point.y, point.z);
         let (element, local) = self.owner[face as usize];
-        Some(Closest {
+        Closest {
             distance_mm: point_mm.distance(query_mm),
             point_mm,
             element,
             face: local,
             normal: self.normals[face as usize],
-        })
+        }
     }
 
     /// Whether any face of these crosses or touches any face of `other`.
@@ -80,5 +97,36 @@ impl Faces {
             }
             _ => false,
         }
+    }
+}
+
+/// Each output element's own faces, built when first asked for and kept
+/// until the element changes: the check that nothing new crosses what is
+/// there asks for the same long threads patch after patch.
+#[derive(Default)]
+pub(super) struct ElementFaces {
+    built: Vec<Option<Faces>>,
+}
+
+impl ElementFaces {
+    /// The faces of `element`, output element `k`.
+    pub fn get(&mut self, k: usize, element: &Element) -> &Faces {
+        if self.built.len() <= k {
+            self.built.resize_with(k + 1, || None);
+        }
+        self.built[k].get_or_insert_with(|| Faces::new([element]))
+    }
+
+    /// Output element `k`'s faces, when built.
+    pub fn built(&self, k: usize) -> Option<&Faces> {
+        self.built.get(k)?.as_ref()
+    }
+
+    /// Output element `k` is now the one `faces` were built from.
+    pub fn set(&mut self, k: usize, faces: Faces) {
+        if self.built.len() <= k {
+            self.built.resize_with(k + 1, || None);
+        }
+        self.built[k] = Some(faces);
     }
 }

@@ -9,7 +9,7 @@ use glam::DVec3;
 
 use super::cut::{FORCED, min_cut_keep};
 use super::deform::{Constraint, deform};
-use super::faces::Faces;
+use super::faces::{Closest, ElementFaces, Faces};
 use super::self_crossing::crosses_itself;
 use super::stitch::stitch;
 use super::zones::{Zone, Zones, boxes_overlap};
@@ -72,16 +72,21 @@ struct Pair {
 }
 
 /// Close pairs from the vertices of `from` (passing `wanted`) to `to`.
-fn pairs(from: &Element, to: &Faces, reach_mm: f64, wanted: impl Fn(DVec3) -> bool) -> Vec<Pair> {
+fn pairs(
+    from: &Element,
+    closest_within: impl Fn(DVec3, f64) -> Option<Closest>,
+    reach_mm: f64,
+    wanted: impl Fn(DVec3) -> bool,
+) -> Vec<Pair> {
     let normals = from.vertex_normals();
     from.vertices
         .iter()
         .enumerate()
         .filter(|(_, v)| wanted(**v))
         .filter_map(|(i, &v)| {
-            let hit = to.closest(v)?;
+            let hit = closest_within(v, reach_mm)?;
             // Opposite normals are two sides of a thin part, not one surface.
-            (hit.distance_mm <= reach_mm && hit.normal.dot(normals[i]) > 0.0).then_some(Pair {
+            (hit.normal.dot(normals[i]) > 0.0).then_some(Pair {
                 vertex: i as u32,
                 other: hit.element as usize,
                 point: hit.point_mm,
@@ -90,9 +95,21 @@ fn pairs(from: &Element, to: &Faces, reach_mm: f64, wanted: impl Fn(DVec3) -> bo
         .collect()
 }
 
+/// The closest point to `query_mm` within `max_mm` among several sets of
+/// faces, its `element` the set's place in `sets` (each set here holds
+/// one element).
+fn closest_among(sets: &[&Faces], query_mm: DVec3, max_mm: f64) -> Option<Closest> {
+    sets.iter()
+        .enumerate()
+        .filter_map(|(k, faces)| faces.closest_within(query_mm, max_mm).map(|hit| (k, hit)))
+        .min_by(|a, b| a.1.distance_mm.total_cmp(&b.1.distance_mm))
+        .map(|(k, hit)| Closest { element: k as u32, ..hit })
+}
+
 /// Merges the swatch's elements `placed` in output space into `output`.
 pub(super) fn merge_patch(
     output: &mut Vec<Element>,
+    output_faces: &mut ElementFaces,
     placed: Vec<Element>,
     grid: &impl Zones,
     settings: &Settings,
@@ -103,10 +120,17 @@ pub(super) fn merge_patch(
     let placed: Vec<Element> = placed.into_iter().filter(|e| e.vertices.iter().any(|&v| in_patch(v))).collect();
     let area = grid.near_box(reach_mm);
     let near: Vec<usize> = (0..output.len()).filter(|&k| boxes_overlap(output[k].bounds(), area)).collect();
-    let out_faces = Faces::new(near.iter().map(|&k| &output[k]));
+    // The output's elements near the patch, each by its own faces, kept
+    // from patch to patch while it does not change.
+    for &k in &near {
+        output_faces.get(k, &output[k]);
+    }
+    let out_faces: Vec<&Faces> = near.iter().filter_map(|&k| output_faces.built(k)).collect();
     let in_faces = Faces::new(&placed);
-    let forward: Vec<Vec<Pair>> = near.iter().map(|&k| pairs(&output[k], &in_faces, reach_mm, in_patch)).collect();
-    let backward: Vec<Vec<Pair>> = placed.iter().map(|e| pairs(e, &out_faces, reach_mm, |_| true)).collect();
+    let to_in = |p: DVec3, max_mm: f64| in_faces.closest_within(p, max_mm);
+    let to_out = |p: DVec3, max_mm: f64| closest_among(&out_faces, p, max_mm);
+    let forward: Vec<Vec<Pair>> = near.iter().map(|&k| pairs(&output[k], to_in, reach_mm, in_patch)).collect();
+    let backward: Vec<Vec<Pair>> = placed.iter().map(|e| pairs(e, to_out, reach_mm, |_| true)).collect();
     let mut related: HashMap<(usize, usize), usize> = HashMap::new();
     for (o, list) in forward.iter().enumerate() {
         for p in list {
@@ -156,25 +180,23 @@ pub(super) fn merge_patch(
     }
     // Nothing goes in that would cross what is there: the print would not
     // be sound.
-    let mut built: HashMap<usize, Faces> = HashMap::new();
     for (replaces, element) in changes {
         let faces = Faces::new([&element]);
         let bounds = element.bounds();
         let others: Vec<usize> =
             (0..output.len()).filter(|&k| Some(k) != replaces && boxes_overlap(output[k].bounds(), bounds)).collect();
-        let crosses =
-            others.iter().any(|&k| faces.intersects(built.entry(k).or_insert_with(|| Faces::new([&output[k]]))));
+        let crosses = others.iter().any(|&k| faces.intersects(output_faces.get(k, &output[k])));
         if crosses {
             counts.collided += 1;
             continue;
         }
         match replaces {
             Some(k) => {
-                built.insert(k, faces);
+                output_faces.set(k, faces);
                 output[k] = element;
             }
             None => {
-                built.insert(output.len(), faces);
+                output_faces.set(output.len(), faces);
                 output.push(element);
             }
         }
@@ -277,7 +299,7 @@ fn cut_and_stitch(c_out: &Element, c_in: &Element, grid: &impl Zones, reach_mm: 
     // Each swatch face's closest output face, asked once: it says both what
     // the output covers and, after the cut, what of the swatch stays.
     let over: Vec<Option<u32>> = (0..c_in.triangles.len())
-        .map(|f| out_faces.closest(c_in.face_centre(f)).filter(|h| h.distance_mm <= reach_mm).map(|h| h.face))
+        .map(|f| out_faces.closest_within(c_in.face_centre(f), reach_mm).map(|h| h.face))
         .collect();
     let matched: Vec<bool> = over.iter().map(Option::is_some).collect();
     let in_neighbours = c_in.face_neighbours();
@@ -286,8 +308,13 @@ fn cut_and_stitch(c_out: &Element, c_in: &Element, grid: &impl Zones, reach_mm: 
         .collect();
     let mut distance = vec![4.0 * reach_mm; c_out.vertices.len()];
     let mut sink_vertex = vec![false; c_out.vertices.len()];
+    let mut asked = vec![false; c_out.vertices.len()];
     for &f in &active {
         for v in c_out.triangles[f as usize] {
+            // A corner is shared by several triangles: asked once.
+            if std::mem::replace(&mut asked[v as usize], true) {
+                continue;
+            }
             let Some(h) = in_faces.closest(c_out.vertices[v as usize]) else { continue };
             distance[v as usize] = h.distance_mm;
             sink_vertex[v as usize] = h.distance_mm <= reach_mm
@@ -342,8 +369,13 @@ fn cut_and_stitch(c_out: &Element, c_in: &Element, grid: &impl Zones, reach_mm: 
     // the strip a clean band to bridge.
     let gap_mm = SEAM_GAP_EDGES * c_in.mean_edge_mm();
     let kept_a = Faces::new([&a]);
-    let clear = |v: u32| kept_a.closest(c_in.vertices[v as usize]).is_none_or(|h| h.distance_mm > gap_mm);
-    let b = without_specks(c_in.subset(|f| kept_in[f] && c_in.triangles[f].iter().all(|&v| clear(v))));
+    let mut clear = vec![None; c_in.vertices.len()];
+    let mut is_clear = |v: u32| {
+        *clear[v as usize].get_or_insert_with(|| kept_a.closest_within(c_in.vertices[v as usize], gap_mm).is_none())
+    };
+    let kept_b: Vec<bool> =
+        (0..c_in.triangles.len()).map(|f| kept_in[f] && c_in.triangles[f].iter().all(|&v| is_clear(v))).collect();
+    let b = without_specks(c_in.subset(|f| kept_b[f]));
     if a.triangles.is_empty() || b.triangles.is_empty() {
         return None;
     }

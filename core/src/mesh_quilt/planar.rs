@@ -6,7 +6,7 @@
 use glam::{DVec2, DVec3};
 
 use super::curved::ShellReport;
-use super::faces::Faces;
+use super::faces::{ElementFaces, Faces};
 use super::matching::{Input, MARGIN_CELLS, Neighbourhood, best_translation, reach_mm, thin};
 use super::merge::{MergeCounts, merge_patch};
 use super::zones::{Zone, Zones};
@@ -153,6 +153,7 @@ pub fn quilt_plane(
     let half = input.window_half();
     let mut random = SplitMix64::new(settings.seed);
     let mut quilt = Quilt::default();
+    let mut output_faces = ElementFaces::default();
     let total = grid.processed.len() as f32;
     while let Some(seed) = grid.seed() {
         control.check()?;
@@ -165,7 +166,7 @@ pub fn quilt_plane(
         let (a, b, offset) = best_translation(&input, &around, seed, settings, reach_mm, to_output, false, &mut random);
         grid.footprint = [a + MARGIN_CELLS, b + MARGIN_CELLS, a + sx - MARGIN_CELLS, b + sy - MARGIN_CELLS];
         let placed: Vec<Element> = swatch.elements.iter().map(|e| e.translated(offset.offset_mm.extend(0.0))).collect();
-        let counts = merge_patch(&mut quilt.elements, placed, &grid, settings, reach_mm);
+        let counts = merge_patch(&mut quilt.elements, &mut output_faces, placed, &grid, settings, reach_mm);
         quilt.counts.merges.add(&counts);
         let [i0, j0, i1, j1] = grid.footprint;
         for j in j0.max(0)..j1.min(grid.ny) {
