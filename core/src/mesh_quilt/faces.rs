@@ -114,6 +114,11 @@ impl ElementFaces {
         if self.built.len() <= k {
             self.built.resize_with(k + 1, || None);
         }
+        // A guard, cheap next to a build: faces of another element (one
+        // changed without `set`) would not match its triangle count.
+        if self.built[k].as_ref().is_some_and(|f| f.owner.len() != element.triangles.len()) {
+            self.built[k] = None;
+        }
         self.built[k].get_or_insert_with(|| Faces::new([element]))
     }
 
