@@ -10,6 +10,8 @@ use egui_kittest::kittest::Queryable;
 use tracery::TraceryApp;
 use tracery::dialogs::FileKind;
 use tracery::worker::JobState;
+use tracery_core::control::Control;
+use tracery_core::mesh_quilt::{GuidanceField, builtin_swatch, make_surface_product};
 use tracery_core::surface::{SurfaceMesh, SurfaceOutput, builtin_base};
 
 #[path = "common/distance.rs"]
@@ -272,6 +274,49 @@ fn texture_turned_on_covers_the_cone_and_prints_with_it_as_one_body() {
     harness.key_press_modifiers(egui::Modifiers::COMMAND, egui::Key::Z);
     harness.run_steps(2);
     assert!(!harness.state().doc.model.texture.on, "undo turns the texture off");
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+#[test]
+fn texture_along_a_curve_drawn_on_the_model_follows_it() {
+    let (dir, _, _, mut harness) = model_export("texture-curves");
+    harness.state_mut().doc.model.base = tracery::document::BaseRef::Builtin("cone".into());
+    harness.run_steps(2);
+    click_in_side_panel(&mut harness, "along curves");
+    click_in_side_panel(&mut harness, "Cover the model with texture");
+    settle_model(&mut harness);
+    // Nothing drawn yet: the texture says what it lacks.
+    match harness.state().texture_state() {
+        Some(JobState::Done(Err(e))) => assert!(e.to_string().contains("no curve"), "{e}"),
+        other => panic!("a texture along no curve: {:?}", other.map(|_| ())),
+    }
+    // A curve up the front of the cone, drawn from its foot.
+    let centre = harness.get_by_label("3D view").rect().center();
+    for dy in [40.0, 0.0, -40.0] {
+        click(&mut harness, centre + egui::vec2(0.0, dy));
+    }
+    settle_model(&mut harness);
+    let app = harness.state();
+    assert_eq!(app.doc.model.curves.len(), 1, "{:?}", app.message);
+    let strokes = vec![app.doc.model.curves[0].surface.points_mm.clone()];
+    assert_eq!(strokes[0].len(), 3, "every click on the cone picks a point");
+    let Some(JobState::Done(Ok(texture))) = app.texture_state() else {
+        panic!("no texture along the curve: {:?}", app.texture_state().map(|_| ()));
+    };
+    // The same texture made directly, its field interpolated from the
+    // picked points: the app passed the curve on, and nothing else.
+    let surface = SurfaceMesh::new(builtin_base("cone").unwrap()).unwrap();
+    let field = GuidanceField::from_strokes(&surface, &strokes).unwrap();
+    let swatch = builtin_swatch(&app.doc.model.texture.swatch).unwrap();
+    let expected =
+        make_surface_product(&swatch, &surface, &field, &app.doc.model.texture.settings, &Control::default()).unwrap();
+    assert!(texture.facts.count("elements").unwrap() > 20, "{:?}", texture.facts);
+    assert_eq!(texture.mesh_mm, expected.mesh_mm, "the texture follows the drawn curve");
+    // Around the axis it differs.
+    let around = GuidanceField::around_axis(&surface);
+    let other =
+        make_surface_product(&swatch, &surface, &around, &app.doc.model.texture.settings, &Control::default()).unwrap();
+    assert_ne!(texture.mesh_mm, other.mesh_mm, "a curve up the cone turns the texture");
     let _ = std::fs::remove_dir_all(&dir);
 }
 

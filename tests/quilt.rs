@@ -104,7 +104,7 @@ fn bad_input_fails_with_one_line_and_no_file() {
     let stl = dir.join("out.stl");
     let bad_field = dir.join("field.txt");
     std::fs::write(&bad_field, "# one stroke, one point short\n30,0,5; 30,0\n").unwrap();
-    let cases: [(&[&str], &str); 11] = [
+    let cases: [(&[&str], &str); 13] = [
         (&["--swatch", "lace", "--base", "plane:40x40"], "no mesh file or built-in swatch"),
         (&["--swatch", "weave", "--base", "plane:40"], "not a base"),
         (&["--swatch", "weave", "--base", "plane:40x40", "--scale", "0"], "scale"),
@@ -116,6 +116,8 @@ fn bad_input_fails_with_one_line_and_no_file() {
         (&["--swatch", "weave", "--base", "plane:40x40", "--field", &path(&bad_field)], "for models"),
         (&["--swatch", "weave", "--base", "vase", "--field", &path(&dir.join("none.txt"))], "could not read"),
         (&["--swatch", "weave", "--base", "vase", "--field", &path(&bad_field)], "line 2"),
+        (&["--swatch", "weave", "--base", "vase", "--direction", "curves"], "give a field file"),
+        (&["--swatch", "weave", "--base", "vase", "--direction", "up", "--field", &path(&bad_field)], "leave out"),
     ];
     for (args, expected) in cases {
         let out = tracery().arg("quilt").args(args).arg("--stl").arg(&stl).output().unwrap();

@@ -22,6 +22,8 @@ pub enum DirectionArg {
     Around,
     /// Up the model, from its foot towards its top.
     Up,
+    /// Along the strokes in --field.
+    Curves,
 }
 
 /// Flags of `tracery quilt`.
@@ -46,7 +48,7 @@ pub struct QuiltArgs {
     /// How deep the texture sits in a model, mm, so that it unites with it [default: 0.3].
     #[arg(long)]
     pub sink_mm: Option<f64>,
-    /// Which way the swatch runs over a model, unless --field is given [default: around].
+    /// Which way the swatch runs over a model [default: around, or curves when --field is given].
     #[arg(long, value_enum)]
     pub direction: Option<DirectionArg>,
     /// Strokes the swatch's direction follows on a model: a text file, one stroke per line as "x,y,z;x,y,z;..." (mm) [default: around the z axis].
@@ -70,6 +72,8 @@ impl QuiltArgs {
         s.direction = match self.direction {
             Some(DirectionArg::Around) => Direction::AroundAxis,
             Some(DirectionArg::Up) => Direction::AlongAxis,
+            Some(DirectionArg::Curves) => Direction::AlongCurves,
+            None if self.field.is_some() => Direction::AlongCurves,
             None => s.direction,
         };
         s
@@ -108,14 +112,23 @@ pub fn run(args: QuiltArgs) -> Result<()> {
         make_product(&swatch, parse_base(&args.base)?, &settings, &Control::default())?
     } else {
         let surface = SurfaceMesh::new(super::surface::load_base(&args.base)?)?;
-        let field = match &args.field {
+        let strokes = match &args.field {
             Some(path) => {
+                if settings.direction != Direction::AlongCurves {
+                    bail!(
+                        "--field gives strokes for the texture to follow: leave out --direction, or use --direction curves"
+                    );
+                }
                 let text = std::fs::read_to_string(path)
                     .with_context(|| format!("could not read the field file {}", path.display()))?;
-                GuidanceField::from_strokes(&surface, &parse_strokes(&text)?)?
+                parse_strokes(&text)?
             }
-            None => GuidanceField::of(&surface, settings.direction),
+            None if settings.direction == Direction::AlongCurves => {
+                bail!("--direction curves follows the strokes of --field: give a field file")
+            }
+            None => Vec::new(),
         };
+        let field = GuidanceField::of(&surface, settings.direction, &strokes)?;
         let texture = make_surface_product(&swatch, &surface, &field, &settings, &Control::default())?;
         if args.with_base { unite_with_base(texture, &surface)? } else { texture }
     };

@@ -31,12 +31,17 @@ pub struct TextureJob {
     pub swatch: Arc<Swatch>,
     /// The settings.
     pub settings: Settings,
+    /// The curves drawn on the model, as strokes the texture follows when
+    /// it runs along curves (empty otherwise, so that drawing does not
+    /// restart a texture that ignores them).
+    pub strokes_mm: Vec<Vec<[f64; 3]>>,
 }
 
 impl PartialEq for TextureJob {
     fn eq(&self, other: &Self) -> bool {
         Arc::ptr_eq(&self.surface, &other.surface)
             && self.settings == other.settings
+            && self.strokes_mm == other.strokes_mm
             && same(&self.swatch, &other.swatch)
     }
 }
@@ -47,7 +52,7 @@ impl Job for TextureJob {
 
     fn run(&self, control: &Control) -> Result<Product, QuiltError> {
         // Cheap next to the quilting.
-        let field = GuidanceField::of(&self.surface, self.settings.direction);
+        let field = GuidanceField::of(&self.surface, self.settings.direction, &self.strokes_mm)?;
         make_surface_product(&self.swatch, &self.surface, &field, &self.settings, control)
     }
 }
@@ -59,7 +64,12 @@ pub fn submit_texture(app: &mut TraceryApp, now: std::time::Instant) -> bool {
     let base = app.doc.model.base.clone();
     match (texture.on, app.caches.model(&app.doc.model, &base), app.caches.swatch(&texture.swatch)) {
         (true, Ok(model), Ok(swatch)) => {
-            let job = TextureJob { surface: model.surface.clone(), swatch, settings: texture.settings.clone() };
+            let strokes_mm = match texture.settings.direction {
+                Direction::AlongCurves => app.doc.model.drawn_curves().map(|c| c.surface.points_mm.clone()).collect(),
+                _ => Vec::new(),
+            };
+            let job =
+                TextureJob { surface: model.surface.clone(), swatch, settings: texture.settings.clone(), strokes_mm };
             app.texture_worker.want(TEXTURE, job, now);
         }
         (true, Ok(_), Err(e)) => {
@@ -100,6 +110,10 @@ pub fn texture_ui(app: &mut TraceryApp, ui: &mut egui::Ui) {
             .labelled_by(label.id);
         ui.selectable_value(&mut s.direction, Direction::AlongAxis, "up")
             .on_hover_text("The swatch's rows run up the model, from its foot to its top");
+        ui.selectable_value(&mut s.direction, Direction::AlongCurves, "along curves").on_hover_text(
+            "The swatch's rows follow the curves drawn on the model, in the direction each was drawn, \
+             blended between them",
+        );
     });
     ui.add(egui::Slider::new(&mut s.sink_mm, 0.0..=MAX_SINK_MM).text("Sink (mm)"))
         .on_hover_text("How deep the texture sits in the model, so that the two print as one body");

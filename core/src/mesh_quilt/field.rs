@@ -55,11 +55,26 @@ impl GuidanceField {
         GuidanceField { directions }
     }
 
-    /// The field `direction` names.
-    pub fn of(surface: &SurfaceMesh, direction: Direction) -> Self {
+    /// The field `direction` names; `strokes_mm` are the strokes
+    /// [`Direction::AlongCurves`] follows (the others leave them alone).
+    /// Following curves where none is drawn is an error that says so.
+    ///
+    /// ```
+    /// use tracery_core::mesh_quilt::{Direction, GuidanceField};
+    /// use tracery_core::surface::{SurfaceMesh, builtin_base};
+    /// let cylinder = SurfaceMesh::new(builtin_base("cylinder").unwrap()).unwrap();
+    /// assert!(GuidanceField::of(&cylinder, Direction::AroundAxis, &[]).is_ok());
+    /// let err = GuidanceField::of(&cylinder, Direction::AlongCurves, &[]).unwrap_err();
+    /// assert!(err.to_string().contains("no curve"), "{err}");
+    /// ```
+    pub fn of(surface: &SurfaceMesh, direction: Direction, strokes_mm: &[Vec<[f64; 3]>]) -> Result<Self, QuiltError> {
         match direction {
-            Direction::AroundAxis => Self::around_axis(surface),
-            Direction::AlongAxis => Self::along_axis(surface),
+            Direction::AroundAxis => Ok(Self::around_axis(surface)),
+            Direction::AlongAxis => Ok(Self::along_axis(surface)),
+            Direction::AlongCurves if strokes_mm.is_empty() => Err(QuiltError::BadField(
+                "there is no curve on the model for the texture to follow: draw one, or let it run around or up".into(),
+            )),
+            Direction::AlongCurves => Self::from_strokes(surface, strokes_mm),
         }
     }
 

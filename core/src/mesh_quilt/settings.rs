@@ -40,8 +40,7 @@ pub struct Settings {
     /// overlap it and unite with it into one solid, rather than touching
     /// it along a face (which prints as two bodies, or not at all).
     pub sink_mm: f64,
-    /// Which way the swatch's `u` axis runs over a model, unless strokes
-    /// are drawn for it.
+    /// Which way the swatch's `u` axis runs over a model.
     pub direction: Direction,
 }
 
@@ -54,6 +53,10 @@ pub enum Direction {
     AroundAxis,
     /// Up the model, from its foot towards its top.
     AlongAxis,
+    /// Along strokes drawn on the model (the app's curves on the model, or
+    /// `tracery quilt --field`), interpolated between them
+    /// ([`super::GuidanceField::from_strokes`]).
+    AlongCurves,
 }
 
 impl Default for Settings {
