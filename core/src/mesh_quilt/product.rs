@@ -98,8 +98,16 @@ pub fn make_surface_product(
             (on.position_mm - p).dot(surface.normal(on.face, on.barycentric)) >= depth_mm
         })
     };
+    // The shell can bend a whole element through itself where the model
+    // turns tightly (a vase's neck). Such an element prints wrong, and a
+    // boolean's result made from it can come out pinched. It is left out
+    // (after the floor's cut, which takes some such bottoms off).
     let trimmed = product.timings.time("floor", || trim_below(&mut quilt.elements, floor_z_mm, rests))?;
+    let before = quilt.elements.len();
+    product.timings.time("self-crossing", || quilt.elements.retain(|e| !crosses_itself(e)));
+    let bent = before - quilt.elements.len();
     describe(&mut product, &quilt, &swatch);
+    product.facts.push("left_out_self_crossing", Fact::Count(bent));
     product.facts.push("cut_at_floor", Fact::Count(trimmed.cut));
     product.facts.push("removed_at_floor", Fact::Count(trimmed.removed + trimmed.crumbs));
     if let Some(shell) = quilt.shell {
