@@ -23,8 +23,7 @@ fn main() {
         let mut quilt = quilt_plane(&swatch, width, depth, &Settings::default(), &Control::default()).expect("quilt");
         let ms = start.elapsed().as_secs_f64() * 1000.0;
         // As `tracery quilt` does: threads cut at the area's edge.
-        let smallest = swatch.elements.iter().map(|e| e.to_mesh().signed_volume().abs()).fold(f64::INFINITY, f64::min);
-        let edge = trim_to_area(&mut quilt.elements, width, depth, 0.25 * smallest).expect("edge cut");
+        let edge = trim_to_area(&mut quilt.elements, width, depth, swatch.fragment_volume_mm3()).expect("edge cut");
         let faces: usize = quilt.elements.iter().map(|e| e.triangles.len()).sum();
         let open = quilt.elements.iter().filter(|e| !e.is_closed()).count();
         let crossing = quilt.elements.iter().filter(|e| crosses_itself(e)).count();

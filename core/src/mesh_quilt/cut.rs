@@ -74,8 +74,7 @@ pub fn min_cut_keep(
             .edges_directed(node, petgraph::Direction::Incoming)
             .filter(|e| flows[e.id().index()] > 0)
             .map(|e| e.source().index());
-        let next: Vec<usize> = forward.chain(backward).collect();
-        for v in next {
+        for v in forward.chain(backward) {
             if !reached[v] {
                 reached[v] = true;
                 queue.push_back(v);

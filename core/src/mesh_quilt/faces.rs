@@ -111,15 +111,13 @@ pub(super) struct ElementFaces {
 impl ElementFaces {
     /// The faces of `element`, output element `k`.
     pub fn get(&mut self, k: usize, element: &Element) -> &Faces {
-        if self.built.len() <= k {
-            self.built.resize_with(k + 1, || None);
-        }
+        let slot = self.slot(k);
         // A guard, cheap next to a build: faces of another element (one
         // changed without `set`) would not match its triangle count.
-        if self.built[k].as_ref().is_some_and(|f| f.owner.len() != element.triangles.len()) {
-            self.built[k] = None;
+        if slot.as_ref().is_some_and(|f| f.owner.len() != element.triangles.len()) {
+            *slot = None;
         }
-        self.built[k].get_or_insert_with(|| Faces::new([element]))
+        slot.get_or_insert_with(|| Faces::new([element]))
     }
 
     /// Output element `k`'s faces, when built.
@@ -129,9 +127,13 @@ impl ElementFaces {
 
     /// Output element `k` is now the one `faces` were built from.
     pub fn set(&mut self, k: usize, faces: Faces) {
+        *self.slot(k) = Some(faces);
+    }
+
+    fn slot(&mut self, k: usize) -> &mut Option<Faces> {
         if self.built.len() <= k {
             self.built.resize_with(k + 1, || None);
         }
-        self.built[k] = Some(faces);
+        &mut self.built[k]
     }
 }

@@ -229,9 +229,8 @@ fn finish(quilt: &mut Quilt, swatch: &Swatch, width_mm: f64, depth_mm: f64) {
 /// Leaves out open elements and fragments far smaller than the swatch's
 /// smallest element.
 pub(super) fn keep_whole(quilt: &mut Quilt, swatch: &Swatch) {
-    let volume = |e: &Element| e.to_mesh().signed_volume().abs();
-    let smallest = swatch.elements.iter().map(volume).fold(f64::INFINITY, f64::min);
+    let least_mm3 = swatch.fragment_volume_mm3();
     let before = quilt.elements.len();
-    quilt.elements.retain(|e| e.is_closed() && volume(e) >= 0.25 * smallest);
+    quilt.elements.retain(|e| e.is_closed() && e.to_mesh().signed_volume().abs() >= least_mm3);
     quilt.counts.fragments = before - quilt.elements.len();
 }

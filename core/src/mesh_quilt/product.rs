@@ -58,12 +58,10 @@ pub fn make_product(
     let swatch = swatch.scaled(settings.scale);
     let Base::Plane { width_mm, depth_mm } = base;
     let mut quilt = product.timings.time("quilt", || quilt_plane(&swatch, width_mm, depth_mm, settings, control))?;
-    // What is left of a thread past the edge is kept when it is at least
-    // what the quilt keeps of any fragment: a quarter of the smallest
-    // swatch element.
-    let smallest = swatch.elements.iter().map(|e| e.to_mesh().signed_volume().abs()).fold(f64::INFINITY, f64::min);
-    let trimmed =
-        product.timings.time("edge", || trim_to_area(&mut quilt.elements, width_mm, depth_mm, 0.25 * smallest))?;
+    // What is left of a thread past the edge is kept on the terms the quilt
+    // keeps any fragment.
+    let least_mm3 = swatch.fragment_volume_mm3();
+    let trimmed = product.timings.time("edge", || trim_to_area(&mut quilt.elements, width_mm, depth_mm, least_mm3))?;
     describe(&mut product, &quilt, &swatch);
     product.facts.push("cut_at_edge", Fact::Count(trimmed.cut));
     product.facts.push("removed_at_edge", Fact::Count(trimmed.crumbs));

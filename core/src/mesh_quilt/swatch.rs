@@ -115,6 +115,13 @@ impl Swatch {
         hi - lo
     }
 
+    /// The least volume a piece of the quilt keeps to stay in it, mm³: a
+    /// quarter of the smallest element's. A fragment of a cut, or what is
+    /// left of a thread past the edge, below it is a crumb.
+    pub fn fragment_volume_mm3(&self) -> f64 {
+        0.25 * self.elements.iter().map(|e| e.to_mesh().signed_volume().abs()).fold(f64::INFINITY, f64::min)
+    }
+
     /// Triangles in all elements.
     pub fn triangle_count(&self) -> usize {
         self.elements.iter().map(|e| e.triangles.len()).sum()
