@@ -145,8 +145,9 @@ fn describe(product: &mut Product, quilt: &Quilt, swatch: &Swatch) {
         mesh.append(&e.to_mesh());
     }
     let closed = quilt.elements.iter().filter(|e| e.is_closed()).count();
-    // Stitches that would pass through themselves are refused, but the
-    // shell's bending on a curved base is not: the count says so.
+    // Stitches that would pass through themselves are refused, and on a
+    // model elements the shell bends are left out; a whole element of an
+    // imported swatch is taken as it is: the count says so.
     let self_crossing = quilt.elements.iter().filter(|e| crosses_itself(e)).count();
     let m = &quilt.counts.merges;
     product.topology.components = quilt.elements.len();
