@@ -278,6 +278,28 @@ fn texture_turned_on_covers_the_cone_and_prints_with_it_as_one_body() {
 }
 
 #[test]
+fn texture_and_a_pattern_curve_on_the_vase_print_as_one_body() {
+    // Scales over the vase, and a chain rising round it as a pattern: the
+    // chain is embossed since the object holds the vase (laid exactly on
+    // it, the union came out pinched and the object was refused), and the
+    // air a scale seals over the chain is filled (it was a second body).
+    let (dir, stl_path, three_mf, mut harness) = model_export("texture-chain");
+    click_in_side_panel(&mut harness, "Cover the model with texture");
+    let app = harness.state_mut();
+    app.doc.model.texture.swatch = "scales".into();
+    let id = app.doc.add_surface_curve(&tracery::document::SurfaceCurveItem::default());
+    let item = app.doc.model.curve_mut(id).unwrap();
+    item.surface.points_mm = vec![[28.0, 0.0, 15.0], [0.0, 28.0, 25.0], [-25.0, 0.0, 35.0], [0.0, -22.0, 42.0]];
+    assert_eq!(item.surface.output, SurfaceOutput::Pattern);
+    item.settings.band_mm = 7.0;
+    settle_model(&mut harness);
+    let object = export_one_body(&mut harness, &stl_path, &three_mf);
+    let vase = SurfaceMesh::new(builtin_base("vase").unwrap()).unwrap().mesh().signed_volume();
+    assert!(object.signed_volume() > vase + 500.0, "{:.0} mm³ against the vase's {vase:.0}", object.signed_volume());
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+#[test]
 fn texture_along_a_curve_drawn_on_the_model_follows_it() {
     let (dir, _, _, mut harness) = model_export("texture-curves");
     harness.state_mut().doc.model.base = tracery::document::BaseRef::Builtin("cone".into());

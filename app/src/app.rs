@@ -376,6 +376,7 @@ impl TraceryApp {
     fn submit_surface_jobs(&mut self, now: Instant) -> bool {
         let base = self.doc.model.base.clone();
         let mut ids = Vec::new();
+        let holds_model = self.doc.model.holds_model();
         if let Ok(model) = self.caches.model(&self.doc.model, &base) {
             for item in self.doc.model.drawn_curves() {
                 match self.caches.exemplar(&self.doc, &item.exemplar) {
@@ -384,7 +385,7 @@ impl TraceryApp {
                             surface: model.surface.clone(),
                             exemplar,
                             settings: item.settings.clone(),
-                            drawn: item.surface.clone(),
+                            drawn: item.surface_in_object(holds_model),
                             print: self.doc.print,
                         };
                         self.surface_worker.want(item.id, job, now);
@@ -436,11 +437,12 @@ impl TraceryApp {
     /// Asks for the object once every curve on the model is done; returns whether it is being made.
     fn submit_assembly(&mut self, now: Instant) -> bool {
         let base = self.doc.model.base.clone();
+        let holds_model = self.doc.model.holds_model();
         let bands = self
             .doc
             .model
             .drawn_curves()
-            .map(|c| Self::finished_part(&self.surface_worker, c.id, part_role(&c.surface)));
+            .map(|c| Self::finished_part(&self.surface_worker, c.id, part_role(&c.surface_in_object(holds_model))));
         let shades = self.doc.model.shades.iter().map(|c| Self::finished_part(&self.shade_worker, c.id, PartRole::Add));
         let texture =
             self.doc.model.texture.on.then(|| Self::finished_part(&self.texture_worker, model::TEXTURE, PartRole::Add));

@@ -7,7 +7,7 @@ use base64::Engine as _;
 use serde::{Deserialize, Serialize};
 use tracery_core::export::write_stl;
 use tracery_core::mesh::{Mesh, read_stl};
-use tracery_core::surface::{BASE_NAMES, MIN_POINTS, ShadeSettings, SurfaceSettings, builtin_base};
+use tracery_core::surface::{BASE_NAMES, MIN_POINTS, ShadeSettings, SurfaceSettings, builtin_base, object_holds_model};
 use tracery_core::vector_brush;
 
 use super::{DocumentError, ExemplarRef, file_stem, unique_name};
@@ -57,6 +57,17 @@ pub struct SurfaceCurveItem {
     pub settings: vector_brush::Settings,
     /// The picked points, whether the curve closes, twist and what is made.
     pub surface: SurfaceSettings,
+}
+
+impl SurfaceCurveItem {
+    /// How the curve is made in an object that does or does not hold the
+    /// model ([`tracery_core::surface::SurfaceOutput::in_object`]): the same settings the
+    /// curve's job and its part in the object take.
+    pub fn surface_in_object(&self, holds_model: bool) -> SurfaceSettings {
+        let mut surface = self.surface.clone();
+        surface.output = surface.output.in_object(holds_model);
+        surface
+    }
 }
 
 impl Default for SurfaceCurveItem {
@@ -140,9 +151,11 @@ pub struct ModelScene {
 }
 
 impl ModelScene {
-    /// Whether the object holds the model: asked for, or a curve is embossed or carved.
+    /// Whether the object holds the model: asked for, or needed by an
+    /// embossed or carved curve. A pattern curve is then embossed
+    /// ([`SurfaceCurveItem::surface_in_object`]).
     pub fn holds_model(&self) -> bool {
-        self.with_model || self.curves.iter().any(|c| c.surface.output != tracery_core::surface::SurfaceOutput::Pattern)
+        object_holds_model(self.drawn_curves().map(|c| c.surface.output), self.with_model)
     }
 }
 

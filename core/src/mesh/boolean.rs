@@ -55,7 +55,11 @@ fn mesh_of(m: &Manifold) -> Mesh {
 fn combine(model: &Mesh, pattern: &Mesh, op: OpType) -> Result<Mesh, BooleanError> {
     let result = compute_boolean(&manifold(model, "model")?, &manifold(pattern, "pattern")?, op)
         .map_err(BooleanError::Failed)?;
-    Ok(mesh_of(&result))
+    let mut mesh = mesh_of(&result);
+    // Where two surfaces nearly meet, corners come out a fraction of a
+    // micrometre apart, and an STL's `f32` would merge them.
+    super::collapse_short_edges(&mut mesh, super::MIN_EDGE_MM);
+    Ok(mesh)
 }
 
 /// Everything inside `model` or `pattern` (both closed and facing out).

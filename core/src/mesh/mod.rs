@@ -1,7 +1,7 @@
 //! Triangle meshes: the [`Mesh`] type, extrusion of planar regions into
 //! watertight solids (with their repairs), refinement before a mesh is
-//! bent onto a surface, solids from bent sheets, booleans, meshes read from STL and OBJ files, and the mesh
-//! invariants.
+//! bent onto a surface, solids from bent sheets, booleans and the short edges
+//! they leave, meshes read from STL and OBJ files, and the mesh invariants.
 
 mod boolean;
 mod boundary;
@@ -10,6 +10,7 @@ mod import;
 mod refine;
 mod rings;
 mod sanity;
+mod short_edges;
 mod t_junctions;
 mod thicken;
 mod triangle_mesh;
@@ -22,6 +23,7 @@ pub use import::{ImportError, MAX_IMPORTED_TRIANGLES, read_mesh_file, read_obj, 
 pub use refine::split_edges;
 pub use rings::vertex_rings;
 pub use sanity::MeshDefect;
+pub use short_edges::{MIN_EDGE_MM, collapse_short_edges};
 pub use t_junctions::split_t_junctions;
 pub use thicken::thicken;
 pub use triangle_mesh::Mesh;

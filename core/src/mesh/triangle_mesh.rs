@@ -52,6 +52,39 @@ impl Mesh {
     /// assert_eq!((both.shell_count(), both.vertices.len()), (1, 4));
     /// ```
     pub fn remove_crumbs(&mut self, min_volume_mm3: f64) -> usize {
+        self.remove_shells(|volume_mm3| volume_mm3.abs() < min_volume_mm3)
+    }
+
+    /// Fills the cavities: removes the shells facing inward (a negative
+    /// volume), each the wall of a pocket sealed inside the solid, as the
+    /// union of solids that together enclose some air leaves; returns how
+    /// many were removed. The solid is the same seen from outside, and
+    /// prints as one body with no air trapped in it. Only for a mesh whose
+    /// shells all face out but for such walls.
+    ///
+    /// ```
+    /// use tracery_core::mesh::Mesh;
+    /// let tetra = |s: f64| Mesh {
+    ///     vertices: vec![[0.0, 0.0, 0.0], [s, 0.0, 0.0], [0.0, s, 0.0], [0.0, 0.0, s]],
+    ///     triangles: vec![[0, 2, 1], [0, 1, 3], [1, 2, 3], [0, 3, 2]],
+    /// };
+    /// // A small tetrahedron facing in, inside a large one: a hollow.
+    /// let mut hollow = tetra(6.0);
+    /// let mut pocket = tetra(1.0);
+    /// pocket.vertices.iter_mut().flatten().for_each(|c| *c += 1.0);
+    /// pocket.triangles.iter_mut().for_each(|t| t.swap(1, 2));
+    /// hollow.append(&pocket);
+    /// assert_eq!(hollow.fill_cavities(), 1);
+    /// assert_eq!((hollow.shell_count(), hollow.vertices.len()), (1, 4));
+    /// assert!((hollow.signed_volume() - 36.0).abs() < 1e-9);
+    /// ```
+    pub fn fill_cavities(&mut self) -> usize {
+        self.remove_shells(|volume_mm3| volume_mm3 < 0.0)
+    }
+
+    /// Removes the shells whose signed volume (mm³) `remove` picks, with
+    /// the vertices only they used; returns how many were removed.
+    fn remove_shells(&mut self, remove: impl Fn(f64) -> bool) -> usize {
         let shells = self.shell_of_triangles();
         // Each shell's volume, at the index of the triangle naming it.
         let mut volume = vec![0.0; self.triangles.len()];
@@ -59,15 +92,15 @@ impl Mesh {
             let [a, b, c] = t.map(|v| glam::DVec3::from(self.vertices[v as usize]));
             volume[shell] += a.dot(b.cross(c)) / 6.0;
         }
-        let crumb = |shell: usize| f64::abs(volume[shell]) < min_volume_mm3;
-        let crumbs = shells.iter().enumerate().filter(|&(t, &s)| s == t && crumb(s)).count();
-        if crumbs == 0 {
+        let removed = shells.iter().enumerate().filter(|&(t, &s)| s == t && remove(volume[s])).count();
+        if removed == 0 {
             return 0;
         }
-        let triangles = self.triangles.iter().zip(&shells).filter(|&(_, &s)| !crumb(s)).map(|(t, _)| *t).collect();
+        let triangles =
+            self.triangles.iter().zip(&shells).filter(|&(_, &s)| !remove(volume[s])).map(|(t, _)| *t).collect();
         let kept = Mesh { vertices: std::mem::take(&mut self.vertices), triangles };
         *self = super::compact(kept).0;
-        crumbs
+        removed
     }
 }
 

@@ -131,7 +131,9 @@ pub fn unite_with_base(texture: Product, surface: &SurfaceMesh) -> Result<Produc
     product.timings = object.timings;
     product.warnings = object.warnings;
     product.mesh_mm = object.mesh_mm;
-    product.facts.push("crumbs_removed", Fact::Count(object.facts.count("crumbs_removed").unwrap_or(0)));
+    for fact in ["crumbs_removed", "cavities_filled"] {
+        product.facts.push(fact, Fact::Count(object.facts.count(fact).unwrap_or(0)));
+    }
     let shells = product.mesh_mm.as_ref().map_or(0, |m| m.shell_count());
     product.topology.components = shells;
     product.facts.push("shells", Fact::Count(shells));

@@ -48,6 +48,9 @@ pub struct Assembly {
     pub wall_mm: Option<f64>,
     /// Slivers the booleans left, removed (see [`CRUMB_MM3`]).
     pub crumbs: usize,
+    /// Pockets of air sealed inside the object, filled (none when a part
+    /// is carved).
+    pub cavities: usize,
     /// What the person should know.
     pub warnings: Vec<Warning>,
 }
@@ -82,7 +85,9 @@ pub const CRUMB_MM3: f64 = 0.01;
 /// as the model hollowed to the largest wall asked when a
 /// part is carved. Every added and embossed part is then united with it,
 /// and every carved part cut out of it, in that order: a pattern cut out
-/// of the model cuts through whatever was embossed where it runs.
+/// of the model cuts through whatever was embossed where it runs. Slivers
+/// are then removed, and, unless a part is carved, sealed pockets of air
+/// filled.
 ///
 /// ```
 /// use tracery_core::mesh::{Mesh, extrude};
@@ -138,11 +143,17 @@ pub fn assemble(
     }
     let mut mesh_mm = object.ok_or(AssemblyError::Empty)?;
     let crumbs = mesh_mm.remove_crumbs(CRUMB_MM3);
+    // Parts that together enclose some air (a scale arching over an
+    // embossed ring) leave a sealed pocket, whose wall is a shell of its
+    // own. Filled, the object is the same outside and one body. A carved
+    // object keeps its hollow: there an inner shell is the hollowed model's
+    // inside, which no pattern reached through.
+    let cavities = if wall_mm.is_none() { mesh_mm.fill_cavities() } else { 0 };
     let bodies = mesh_mm.shell_count();
     if wall_mm.is_some() && bodies > 1 {
         warnings.push(Warning::CarvedApart { bodies });
     }
-    Ok(Assembly { mesh_mm, bodies, wall_mm, crumbs, warnings })
+    Ok(Assembly { mesh_mm, bodies, wall_mm, crumbs, cavities, warnings })
 }
 
 /// Room left between the flat patterns of several parts laid one above
@@ -156,8 +167,8 @@ const FLAT_SPACING_MM: f64 = 5.0;
 /// Its `mesh_mm` is the object; its `region_mm` the parts' flat patterns
 /// laid one above the other, the first at the bottom, and its topology
 /// theirs, summed. Warnings are gathered once each, timings summed, and the
-/// facts give the number of `parts`, the object's `shells` and the
-/// `crumbs_removed`.
+/// facts give the number of `parts`, the object's `shells`, the
+/// `crumbs_removed` and the `cavities_filled`.
 pub fn assemble_products(
     model: Option<&SurfaceMesh>,
     with_model: bool,
@@ -189,6 +200,7 @@ pub fn assemble_products(
     product.facts.push("parts", Fact::Count(parts.len()));
     product.facts.push("shells", Fact::Count(object.bodies));
     product.facts.push("crumbs_removed", Fact::Count(object.crumbs));
+    product.facts.push("cavities_filled", Fact::Count(object.cavities));
     product.mesh_mm = Some(object.mesh_mm);
     Ok(product)
 }

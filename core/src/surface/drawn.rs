@@ -69,6 +69,43 @@ impl Default for SurfaceSettings {
     }
 }
 
+impl SurfaceOutput {
+    /// What a curve's band is made into when its object also holds the
+    /// model (see [`object_holds_model`]): a pattern lying on the model is
+    /// embossed, sunk [`EMBOSS_SINK_MM`] into it. Laid exactly on the
+    /// surface, its underside would touch the model face to face and
+    /// along edges, and the union of the two can come out pinched (two
+    /// corners at one place), which the next union refuses and a slicer
+    /// reads as edges shared by four faces.
+    ///
+    /// ```
+    /// use tracery_core::surface::SurfaceOutput;
+    /// assert_eq!(SurfaceOutput::Pattern.in_object(true), SurfaceOutput::Emboss);
+    /// assert_eq!(SurfaceOutput::Pattern.in_object(false), SurfaceOutput::Pattern);
+    /// assert_eq!(SurfaceOutput::Carve.in_object(true), SurfaceOutput::Carve);
+    /// ```
+    pub fn in_object(self, holds_model: bool) -> SurfaceOutput {
+        match self {
+            SurfaceOutput::Pattern if holds_model => SurfaceOutput::Emboss,
+            other => other,
+        }
+    }
+}
+
+/// Whether an object made of curves with these `outputs` holds the model:
+/// when it is asked for (`with_model`: a texture or a shade's foot), or
+/// when any curve is embossed or carved.
+///
+/// ```
+/// use tracery_core::surface::{SurfaceOutput, object_holds_model};
+/// assert!(!object_holds_model([SurfaceOutput::Pattern, SurfaceOutput::Pattern], false));
+/// assert!(object_holds_model([SurfaceOutput::Pattern, SurfaceOutput::Emboss], false));
+/// assert!(object_holds_model([], true));
+/// ```
+pub fn object_holds_model(outputs: impl IntoIterator<Item = SurfaceOutput>, with_model: bool) -> bool {
+    with_model || outputs.into_iter().any(|o| o != SurfaceOutput::Pattern)
+}
+
 /// Points closer to the surface than this were on it, mm: a point moved
 /// further is reported.
 pub const SNAP_REPORT_MM: f64 = 1e-3;

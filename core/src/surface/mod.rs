@@ -29,7 +29,9 @@ pub use assembly::{Assembly, AssemblyError, CRUMB_MM3, Part, PartRole, assemble,
 pub use band::{BandOnSurface, Sheet, lay_band};
 pub use bases::{BASE_NAMES, builtin_base};
 pub use chart::{Chart, ChartError, MIN_POINTS};
-pub use drawn::{Drawn, DrawnError, EMBOSS_SINK_MM, SNAP_REPORT_MM, SurfaceOutput, SurfaceSettings, draw_on};
+pub use drawn::{
+    Drawn, DrawnError, EMBOSS_SINK_MM, SNAP_REPORT_MM, SurfaceOutput, SurfaceSettings, draw_on, object_holds_model,
+};
 pub use frames::Frames;
 pub use hollow::{HollowError, hollow};
 pub use ring_domain::SplineDomain;

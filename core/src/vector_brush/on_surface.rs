@@ -14,7 +14,7 @@ use crate::product::{Fact, Facts};
 use crate::report::Timings;
 use crate::surface::{
     AssemblyError, BandOnSurface, DrawnError, EMBOSS_SINK_MM, Part, PartRole, Sheet, SurfaceMesh, SurfaceOutput,
-    SurfaceSettings, assemble, assemble_products, draw_on, lay_band,
+    SurfaceSettings, assemble, assemble_products, draw_on, lay_band, object_holds_model,
 };
 
 /// Why a pattern could not be put on a surface.
@@ -166,7 +166,9 @@ pub fn make_on_surface(
 /// Several curves on one model, each made as [`make_band_on_surface`]
 /// does (with the seed moved on by one for each next curve, so that equal
 /// curves differ), combined with the model once by
-/// [`crate::surface::assemble`]: a multi-curve lamp in one object.
+/// [`crate::surface::assemble`]: a multi-curve lamp in one object. Where
+/// any curve is embossed or carved, the object holds the model, and a
+/// curve asked as a pattern is embossed ([`SurfaceOutput::in_object`]).
 ///
 /// The product's `mesh_mm` is the object, and its `region_mm` the flat
 /// patterns laid one above the other, the first at the bottom; its
@@ -201,11 +203,13 @@ pub fn make_object_on_surface(
     if let [drawn] = curves {
         return make_on_surface(exemplar, surface, drawn, settings, control);
     }
+    let holds_model = object_holds_model(curves.iter().map(|c| c.output), false);
     let mut bands = Vec::new();
     for (k, drawn) in curves.iter().enumerate() {
         let mut brush = settings.clone();
         brush.seed = settings.seed.wrapping_add(k as u64);
-        bands.push((make_band_on_surface(exemplar, surface, drawn, &brush, &control.silent())?, part_role(drawn)));
+        let drawn = SurfaceSettings { output: drawn.output.in_object(holds_model), ..drawn.clone() };
+        bands.push((make_band_on_surface(exemplar, surface, &drawn, &brush, &control.silent())?, part_role(&drawn)));
         control.report(0.8 * (k + 1) as f32 / curves.len() as f32);
     }
     let parts: Vec<(&Product, PartRole)> = bands.iter().map(|(band, role)| (band, *role)).collect();
