@@ -137,7 +137,10 @@ fn surface_settings_ui(ui: &mut egui::Ui, item: &mut SurfaceCurveItem) {
     ui.horizontal(|ui| {
         let label = ui.label("Make");
         ui.selectable_value(&mut s.output, SurfaceOutput::Pattern, "pattern")
-            .on_hover_text("The pattern alone, a shell lying on the model")
+            .on_hover_text(
+                "The pattern alone, a shell lying on the model; \
+                 sunk into it like emboss when the object holds the model (a texture, another embossed curve)",
+            )
             .labelled_by(label.id);
         ui.selectable_value(&mut s.output, SurfaceOutput::Emboss, "emboss")
             .on_hover_text("The pattern united with the model into one solid");
