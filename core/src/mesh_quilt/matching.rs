@@ -7,6 +7,7 @@
 //! output through the patch.
 
 use std::collections::HashMap;
+use std::sync::atomic::{AtomicU64, Ordering};
 
 use glam::{DVec2, DVec3};
 use rayon::prelude::*;
@@ -99,36 +100,59 @@ pub(super) fn best_translation(
     let candidates: Vec<(i64, i64)> = (low.1..=high.1).flat_map(|b| (low.0..=high.0).map(move |a| (a, b))).collect();
     let (window, samples) = (around.window, &around.samples);
     let lambda = settings.lambda;
+    // The least cost found so far, shared by the threads: a candidate is
+    // given up as soon as it is sure to cost more than the tolerance above
+    // it. Every pair costs at least 1 (equation 1), so a partial sum plus 1
+    // for each pair still to come is a lower bound of the whole. The best
+    // found only falls, so a candidate given up would have been left out of
+    // the good ones anyway: the choice is the same as scoring every one.
+    let least = AtomicU64::new(f64::INFINITY.to_bits());
+    let tolerance = settings.tolerance;
+    let beyond = |lower: f64| {
+        let limit = f64::from_bits(least.load(Ordering::Relaxed)) * (1.0 + tolerance) + 1e-9;
+        lower > limit * (1.0 + 1e-12)
+    };
     let cost = |&(a, b): &(i64, i64)| -> f64 {
         if window.is_empty() {
             return 0.0;
         }
         let t = DVec3::new(a as f64 * c, b as f64 * c, 0.0);
-        let forward: f64 = samples
-            .iter()
-            .map(|&(p, n)| match input.faces.closest(p - t) {
-                Some(hit) => pair_cost(hit.distance_mm, n, hit.normal, lambda, c),
-                None => pair_cost(2.0 * c, n, n, lambda, c),
-            })
-            .sum::<f64>()
-            / samples.len().max(1) as f64;
         let mut reverse = Vec::new();
         for &(i, j) in window {
             if let Some(points) = input.by_cell.get(&(i - a, j - b)) {
                 reverse.extend(points.iter().map(|&(p, n)| (p + t, n)));
             }
         }
-        let reverse: Vec<f64> = thin(reverse)
-            .into_iter()
-            .map(|(p, n)| match to_output(p, n) {
+        let reverse = thin(reverse);
+        let reverse_least = if reverse.is_empty() { 0.0 } else { 1.0 };
+        let (ns, nr) = (samples.len().max(1) as f64, reverse.len().max(1) as f64);
+        let mut forward = 0.0;
+        for (k, &(p, n)) in samples.iter().enumerate() {
+            forward += match input.faces.closest(p - t) {
+                Some(hit) => pair_cost(hit.distance_mm, n, hit.normal, lambda, c),
+                None => pair_cost(2.0 * c, n, n, lambda, c),
+            };
+            if beyond((forward + (samples.len() - k - 1) as f64) / ns + reverse_least) {
+                return f64::INFINITY;
+            }
+        }
+        let forward = forward / ns;
+        let mut back = 0.0;
+        for (k, &(p, n)) in reverse.iter().enumerate() {
+            back += match to_output(p, n) {
                 Some((q, m)) => match around.faces.closest(q) {
                     Some(hit) => pair_cost(hit.distance_mm, m, hit.normal, lambda, c),
                     None => pair_cost(2.0 * c, m, m, lambda, c),
                 },
                 None => pair_cost(2.0 * c, n, n, lambda, c),
-            })
-            .collect();
-        forward + reverse.iter().sum::<f64>() / reverse.len().max(1) as f64
+            };
+            if beyond(forward + (back + (reverse.len() - k - 1) as f64) / nr) {
+                return f64::INFINITY;
+            }
+        }
+        let total = forward + back / nr;
+        least.fetch_min(total.to_bits(), Ordering::Relaxed);
+        total
     };
     let costs: Vec<f64> = candidates.par_iter().map(cost).collect();
     let best = costs.iter().copied().fold(f64::INFINITY, f64::min);
