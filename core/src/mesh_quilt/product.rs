@@ -62,7 +62,10 @@ pub fn make_product(
     // keeps any fragment.
     let least_mm3 = swatch.fragment_volume_mm3();
     let trimmed = product.timings.time("edge", || trim_to_area(&mut quilt.elements, width_mm, depth_mm, least_mm3))?;
-    describe(&mut product, &quilt, &swatch);
+    // Stitches that would pass through themselves are refused, but a whole
+    // element of an imported swatch is taken as it is: the count says so.
+    let self_crossing = quilt.elements.iter().filter(|e| crosses_itself(e)).count();
+    describe(&mut product, &quilt, &swatch, self_crossing);
     product.facts.push("cut_at_edge", Fact::Count(trimmed.cut));
     product.facts.push("removed_at_edge", Fact::Count(trimmed.crumbs));
     Ok(product)
@@ -104,7 +107,8 @@ pub fn make_surface_product(
     let before = quilt.elements.len();
     product.timings.time("self-crossing", || quilt.elements.retain(|e| !crosses_itself(e)));
     let bent = before - quilt.elements.len();
-    describe(&mut product, &quilt, &swatch);
+    // Those that crossed themselves were just left out.
+    describe(&mut product, &quilt, &swatch, 0);
     product.facts.push("left_out_self_crossing", Fact::Count(bent));
     product.facts.push("cut_at_floor", Fact::Count(trimmed.cut));
     product.facts.push("removed_at_floor", Fact::Count(trimmed.removed + trimmed.crumbs));
@@ -140,17 +144,14 @@ pub fn unite_with_base(texture: Product, surface: &SurfaceMesh) -> Result<Produc
     Ok(product)
 }
 
-/// The quilt's elements as the product's mesh, with its counts.
-fn describe(product: &mut Product, quilt: &Quilt, swatch: &Swatch) {
+/// The quilt's elements as the product's mesh, with its counts, of which
+/// `self_crossing` elements pass through themselves.
+fn describe(product: &mut Product, quilt: &Quilt, swatch: &Swatch, self_crossing: usize) {
     let mut mesh = Mesh::default();
     for e in &quilt.elements {
         mesh.append(&e.to_mesh());
     }
     let closed = quilt.elements.iter().filter(|e| e.is_closed()).count();
-    // Stitches that would pass through themselves are refused, and on a
-    // model elements the shell bends are left out; a whole element of an
-    // imported swatch is taken as it is: the count says so.
-    let self_crossing = quilt.elements.iter().filter(|e| crosses_itself(e)).count();
     let m = &quilt.counts.merges;
     product.topology.components = quilt.elements.len();
     let facts = &mut product.facts;
