@@ -15,6 +15,7 @@ mod error;
 mod exemplar;
 mod fragments;
 mod joins;
+mod junctions;
 mod matching;
 mod neighbourhood;
 mod orientation;
@@ -35,6 +36,7 @@ pub use error::FillError;
 pub use exemplar::{BAND_MAX_WIDTH_SPACINGS, CurveExemplar, EXEMPLAR_TOLERANCE_MM, FilledShape, MAX_EXEMPLAR_SAMPLES};
 pub use fragments::FragmentLimits;
 pub use joins::join_drawn_ends;
+pub use junctions::{greatest_degree, undo_junctions};
 pub use matching::{Matching, robust_match};
 pub use neighbourhood::{
     EDGE_WEIGHT, EdgeVectors, NeighbourhoodPair, SampleGrid, Similarity, edge_difference, edge_vectors,

@@ -319,13 +319,19 @@ impl SampleGraph {
 
     /// Removes the edges between two of the samples `0..count`.
     pub fn disconnect_among(&mut self, count: usize) {
+        self.disconnect_where(|a, b| (a as usize) < count && (b as usize) < count);
+    }
+
+    /// Removes the edges `(a, b)` (`a < b`) that `remove` picks, keeping
+    /// the others' orientations.
+    pub fn disconnect_where(&mut self, remove: impl Fn(u32, u32) -> bool) {
         let edges = self.oriented_edges();
         self.neighbours = vec![SmallVec::new(); self.samples.len()];
         for sample in &mut self.samples {
             sample.orientations.clear();
         }
         for (a, b, at_a, at_b) in edges {
-            if (a as usize) >= count || (b as usize) >= count {
+            if !remove(a, b) {
                 self.connect_oriented(a, b, at_a, at_b);
             }
         }

@@ -15,7 +15,7 @@ use super::search::KindIndex;
 use super::{
     CurvePath, EdgeTangents, Elements, FillError, JOIN_TOLERANCE_MM, LEVELS, NearestField, NeighbourhoodPair,
     Neighbourhoods, PlacedElement, SampleGraph, SampleGrid, SearchSettings, Settings, Similarity, assign_orientations,
-    search,
+    greatest_degree, search, undo_junctions,
 };
 
 /// Patches (section 4.3.2): the rectangle `size_mm` is tiled with squares
@@ -237,6 +237,12 @@ pub fn synthesize_oriented(
             element_spacing_mm,
         };
         let mut output = synthesize_level(&input, output, start, &at, &mut rng)?;
+        // Where the exemplar's paths never meet, neither do the new ones:
+        // a stray branch joining two spirals is cut off (what was drawn
+        // keeps its joins).
+        if at.last && greatest_degree(&input) <= 2 {
+            undo_junctions(&mut output, pinned);
+        }
         // What was drawn is added back whole at the next level: only the new
         // paths (and their edges onto what was drawn) are carried.
         output.disconnect_among(pinned);
