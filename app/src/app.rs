@@ -385,7 +385,7 @@ impl TraceryApp {
                             surface: model.surface.clone(),
                             exemplar,
                             settings: item.settings.clone(),
-                            drawn: item.surface_in_object(holds_model),
+                            drawn: item.surface.in_object(holds_model),
                             print: self.doc.print,
                         };
                         self.surface_worker.want(item.id, job, now);
@@ -442,7 +442,7 @@ impl TraceryApp {
             .doc
             .model
             .drawn_curves()
-            .map(|c| Self::finished_part(&self.surface_worker, c.id, part_role(&c.surface_in_object(holds_model))));
+            .map(|c| Self::finished_part(&self.surface_worker, c.id, part_role(&c.surface.in_object(holds_model))));
         let shades = self.doc.model.shades.iter().map(|c| Self::finished_part(&self.shade_worker, c.id, PartRole::Add));
         let texture =
             self.doc.model.texture.on.then(|| Self::finished_part(&self.texture_worker, model::TEXTURE, PartRole::Add));

@@ -59,17 +59,6 @@ pub struct SurfaceCurveItem {
     pub surface: SurfaceSettings,
 }
 
-impl SurfaceCurveItem {
-    /// How the curve is made in an object that does or does not hold the
-    /// model ([`tracery_core::surface::SurfaceOutput::in_object`]): the same settings the
-    /// curve's job and its part in the object take.
-    pub fn surface_in_object(&self, holds_model: bool) -> SurfaceSettings {
-        let mut surface = self.surface.clone();
-        surface.output = surface.output.in_object(holds_model);
-        surface
-    }
-}
-
 impl Default for SurfaceCurveItem {
     fn default() -> Self {
         SurfaceCurveItem {
@@ -153,7 +142,7 @@ pub struct ModelScene {
 impl ModelScene {
     /// Whether the object holds the model: asked for, or needed by an
     /// embossed or carved curve. A pattern curve is then embossed
-    /// ([`SurfaceCurveItem::surface_in_object`]).
+    /// ([`SurfaceSettings::in_object`]).
     pub fn holds_model(&self) -> bool {
         object_holds_model(self.drawn_curves().map(|c| c.surface.output), self.with_model)
     }

@@ -145,6 +145,21 @@ impl SurfaceSettings {
             .collect()
     }
 
+    /// These settings as a part of an object that does or does not hold
+    /// the model: a pattern is embossed where it does
+    /// ([`SurfaceOutput::in_object`]). A curve's band and its part in the
+    /// object are both made from these.
+    ///
+    /// ```
+    /// use tracery_core::surface::{SurfaceOutput, SurfaceSettings};
+    /// let pattern = SurfaceSettings::default();
+    /// assert_eq!(pattern.in_object(true).output, SurfaceOutput::Emboss);
+    /// assert_eq!(pattern.in_object(false), pattern);
+    /// ```
+    pub fn in_object(&self, holds_model: bool) -> SurfaceSettings {
+        SurfaceSettings { output: self.output.in_object(holds_model), ..self.clone() }
+    }
+
     /// Checks the settings.
     pub fn validate(&self) -> Result<(), DrawnError> {
         let least = if self.closed { 3 } else { 2 };

@@ -168,7 +168,7 @@ pub fn make_on_surface(
 /// curves differ), combined with the model once by
 /// [`crate::surface::assemble`]: a multi-curve lamp in one object. Where
 /// any curve is embossed or carved, the object holds the model, and a
-/// curve asked as a pattern is embossed ([`SurfaceOutput::in_object`]).
+/// curve asked as a pattern is embossed ([`SurfaceSettings::in_object`]).
 ///
 /// The product's `mesh_mm` is the object, and its `region_mm` the flat
 /// patterns laid one above the other, the first at the bottom; its
@@ -208,7 +208,7 @@ pub fn make_object_on_surface(
     for (k, drawn) in curves.iter().enumerate() {
         let mut brush = settings.clone();
         brush.seed = settings.seed.wrapping_add(k as u64);
-        let drawn = SurfaceSettings { output: drawn.output.in_object(holds_model), ..drawn.clone() };
+        let drawn = drawn.in_object(holds_model);
         bands.push((make_band_on_surface(exemplar, surface, &drawn, &brush, &control.silent())?, part_role(&drawn)));
         control.report(0.8 * (k + 1) as f32 / curves.len() as f32);
     }
