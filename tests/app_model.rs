@@ -159,7 +159,7 @@ fn a_model_that_is_not_a_surface_is_refused_and_its_name_stays_free() {
 }
 
 /// A folder for an export test's files, and the app answering its STL and
-/// 3MF dialogs with files there, showing the model workspace.
+/// 3MF dialogs (twice each) with files there, showing the model workspace.
 fn model_export(
     name: &str,
 ) -> (std::path::PathBuf, std::path::PathBuf, std::path::PathBuf, Harness<'static, TraceryApp>) {
@@ -167,7 +167,9 @@ fn model_export(
     let _ = std::fs::remove_dir_all(&dir);
     std::fs::create_dir_all(&dir).unwrap();
     let (stl_path, three_mf) = (dir.join(format!("{name}.stl")), dir.join(format!("{name}.3mf")));
-    let mut harness = harness(vec![(FileKind::ExportStl, stl_path.clone()), (FileKind::Export3mf, three_mf.clone())]);
+    // Answered twice, for tests that export before and after a change.
+    let answers = [(FileKind::ExportStl, stl_path.clone()), (FileKind::Export3mf, three_mf.clone())];
+    let mut harness = harness(answers.iter().chain(&answers).cloned().collect());
     harness.step();
     harness.get_by_label("3D model").click();
     harness.run_steps(2);
@@ -301,7 +303,7 @@ fn texture_and_a_pattern_curve_on_the_vase_print_as_one_body() {
 
 #[test]
 fn texture_along_a_curve_drawn_on_the_model_follows_it() {
-    let (dir, _, _, mut harness) = model_export("texture-curves");
+    let (dir, stl_path, three_mf, mut harness) = model_export("texture-curves");
     harness.state_mut().doc.model.base = tracery::document::BaseRef::Builtin("cone".into());
     harness.run_steps(2);
     click_in_side_panel(&mut harness, "along curves");
@@ -339,6 +341,29 @@ fn texture_along_a_curve_drawn_on_the_model_follows_it() {
     let other =
         make_surface_product(&swatch, &surface, &around, &app.doc.model.texture.settings, &Control::default()).unwrap();
     assert_ne!(texture.mesh_mm, other.mesh_mm, "a curve up the cone turns the texture");
+    // The curve carries a chain too; made a guide, it turns the texture
+    // the same and carries nothing: the object loses the chain's volume.
+    let id = app.doc.model.curves[0].id;
+    assert!(matches!(app.surface_job_state(id), Some(JobState::Done(Ok(_)))), "the curve's chain");
+    let with_chain = export_one_body(&mut harness, &stl_path, &three_mf);
+    click_in_side_panel(&mut harness, "guide");
+    settle_model(&mut harness);
+    let app = harness.state();
+    assert!(app.doc.model.curves[0].guide, "{:?}", app.message);
+    assert!(app.surface_job_state(id).is_none(), "a guide has no pattern of its own");
+    match app.texture_state() {
+        Some(JobState::Done(Ok(guided))) => assert_eq!(guided.mesh_mm, expected.mesh_mm, "the guide turns the texture"),
+        other => panic!("no texture along the guide: {:?}", other.map(|_| ())),
+    }
+    harness.get_by_label(&format!("Curve {id} guides the texture's rows"));
+    let _ = (std::fs::remove_file(&stl_path), std::fs::remove_file(&three_mf));
+    let guided = export_one_body(&mut harness, &stl_path, &three_mf);
+    let chain = with_chain.signed_volume() - guided.signed_volume();
+    assert!(chain > 30.0, "the chain's {chain:.0} mm³ left the object");
+    // Undo gives the chain back.
+    harness.key_press_modifiers(egui::Modifiers::COMMAND, egui::Key::Z);
+    harness.run_steps(2);
+    assert!(!harness.state().doc.model.curves[0].guide, "undo makes the curve carry its pattern again");
     let _ = std::fs::remove_dir_all(&dir);
 }
 

@@ -181,6 +181,36 @@ fn regenerate_texture_screenshot() {
 
 #[test]
 #[ignore = "writes screenshots/; run on purpose"]
+fn regenerate_texture_guide_screenshot() {
+    let mut harness = rendered_window();
+    harness.get_by_label("3D model").click();
+    harness.run_steps(2);
+    {
+        let app = harness.state_mut();
+        let texture = &mut app.doc.model.texture;
+        texture.on = true;
+        texture.swatch = "scales".into();
+        texture.settings.direction = tracery_core::mesh_quilt::Direction::AlongCurves;
+        app.doc.model.with_model = true;
+        // A guide rising round the vase's front: the scales' rows follow it.
+        let id = app.doc.add_surface_curve(&SurfaceCurveItem { guide: true, ..Default::default() });
+        let vase = SurfaceMesh::new(builtin_base("vase").unwrap()).unwrap();
+        let points: Vec<[f64; 3]> = (0..7)
+            .map(|k| {
+                let a = (-150.0 + 20.0 * k as f64).to_radians();
+                let z = 12.0 + 5.0 * k as f64;
+                vase.closest_point([40.0 * a.cos(), 40.0 * a.sin(), z]).position_mm.to_array()
+            })
+            .collect();
+        app.doc.model.curve_mut(id).unwrap().surface.points_mm = points;
+        app.selected_surface = None;
+    }
+    settle_model(&mut harness);
+    save(&mut harness, "texture-guide.png");
+}
+
+#[test]
+#[ignore = "writes screenshots/; run on purpose"]
 fn regenerate_berries_screenshot() {
     let mut harness = rendered_window();
     harness.step();

@@ -57,6 +57,20 @@ pub struct SurfaceCurveItem {
     pub settings: vector_brush::Settings,
     /// The picked points, whether the curve closes, twist and what is made.
     pub surface: SurfaceSettings,
+    /// Whether the curve only guides the texture's rows (when they run
+    /// along curves) and carries no pattern of its own: no job, no part in
+    /// the object.
+    pub guide: bool,
+}
+
+impl SurfaceCurveItem {
+    /// The picked points in order, back to the first when the curve is
+    /// closed.
+    pub fn path_mm(&self) -> Vec<[f64; 3]> {
+        let points = &self.surface.points_mm;
+        let back = points.first().copied().filter(|_| self.surface.closed && points.len() > 1);
+        points.iter().copied().chain(back).collect()
+    }
 }
 
 impl Default for SurfaceCurveItem {
@@ -66,6 +80,7 @@ impl Default for SurfaceCurveItem {
             exemplar: ExemplarRef::Builtin("chain".into()),
             settings: vector_brush::Settings::default(),
             surface: SurfaceSettings::default(),
+            guide: false,
         }
     }
 }
@@ -180,10 +195,19 @@ impl ModelScene {
         Ok(BaseRef::Imported(name))
     }
 
-    /// The curves with points enough to carry a pattern: those that have a
-    /// job, and a part in the object.
+    /// The curves that carry a pattern and have points enough for one:
+    /// those that have a job, and a part in the object. Guides are not
+    /// among them.
     pub fn drawn_curves(&self) -> impl Iterator<Item = &SurfaceCurveItem> + Clone {
-        self.curves.iter().filter(|c| c.surface.points_mm.len() >= MIN_POINTS)
+        self.curves.iter().filter(|c| !c.guide && c.surface.points_mm.len() >= MIN_POINTS)
+    }
+
+    /// The strokes a texture running along curves follows: every curve
+    /// with points enough, guide or pattern, in drawing order; a closed one
+    /// returns to its first point.
+    pub fn texture_strokes_mm(&self) -> Vec<Vec<[f64; 3]>> {
+        let long_enough = self.curves.iter().filter(|c| c.surface.points_mm.len() >= MIN_POINTS);
+        long_enough.map(SurfaceCurveItem::path_mm).collect()
     }
 
     /// The curve with `id`.

@@ -2,6 +2,7 @@
 //! selected curve's settings) and its status line.
 
 use egui::RichText;
+use tracery_core::mesh_quilt::Direction;
 use tracery_core::surface::{BASE_NAMES, SurfaceOutput};
 use tracery_core::vector_brush::Settings;
 
@@ -49,7 +50,8 @@ pub fn model_panel_ui(app: &mut TraceryApp, ui: &mut egui::Ui) {
     let mut clicked = None;
     for item in &app.doc.model.curves {
         let n = item.surface.points_mm.len();
-        let text = format!("Curve {} — {n} point{}", item.id, if n == 1 { "" } else { "s" });
+        let guide = if item.guide { ", a guide" } else { "" };
+        let text = format!("Curve {} — {n} point{}{guide}", item.id, if n == 1 { "" } else { "s" });
         if ui.selectable_label(app.selected_surface == Some(item.id), text).clicked() {
             clicked = Some(item.id);
         }
@@ -99,7 +101,10 @@ pub fn model_panel_ui(app: &mut TraceryApp, ui: &mut egui::Ui) {
         .strong(),
     );
     surface_settings_ui(ui, &mut item);
-    brush_ui(app, ui, &mut item.exemplar, &mut item.settings);
+    // A guide's pattern settings are kept, for when it carries one again.
+    if !item.guide {
+        brush_ui(app, ui, &mut item.exemplar, &mut item.settings);
+    }
     match app.selected_surface.and_then(|id| app.doc.model.curve_mut(id)) {
         Some(stored) if *stored != item => *stored = item,
         Some(_) => {}
@@ -130,23 +135,44 @@ pub(super) fn brush_ui(app: &mut TraceryApp, ui: &mut egui::Ui, exemplar: &mut E
     }
 }
 
+/// What a curve makes: one of the surface's outputs, or nothing but a
+/// guide for the texture.
+#[derive(Clone, Copy, PartialEq)]
+enum Make {
+    Output(SurfaceOutput),
+    Guide,
+}
+
 /// What is made, and how the band lies on the surface.
 fn surface_settings_ui(ui: &mut egui::Ui, item: &mut SurfaceCurveItem) {
     let s = &mut item.surface;
     ui.checkbox(&mut s.closed, "Closed curve (a ring back to the first point)");
+    let mut make = if item.guide { Make::Guide } else { Make::Output(s.output) };
     ui.horizontal(|ui| {
         let label = ui.label("Make");
-        ui.selectable_value(&mut s.output, SurfaceOutput::Pattern, "pattern")
+        ui.selectable_value(&mut make, Make::Output(SurfaceOutput::Pattern), "pattern")
             .on_hover_text(
                 "The pattern alone, a shell lying on the model; \
                  sunk into it like emboss when the object holds the model (a texture, another embossed curve)",
             )
             .labelled_by(label.id);
-        ui.selectable_value(&mut s.output, SurfaceOutput::Emboss, "emboss")
+        ui.selectable_value(&mut make, Make::Output(SurfaceOutput::Emboss), "emboss")
             .on_hover_text("The pattern united with the model into one solid");
-        ui.selectable_value(&mut s.output, SurfaceOutput::Carve, "carve")
+        ui.selectable_value(&mut make, Make::Output(SurfaceOutput::Carve), "carve")
             .on_hover_text("The pattern cut out of the model hollowed to a shell");
+        ui.selectable_value(&mut make, Make::Guide, "guide")
+            .on_hover_text("No pattern: the curve only guides the texture's rows, when they run along curves");
     });
+    match make {
+        Make::Guide => item.guide = true,
+        Make::Output(output) => {
+            item.guide = false;
+            s.output = output;
+        }
+    }
+    if item.guide {
+        return;
+    }
     if s.output == SurfaceOutput::Carve {
         ui.add(egui::Slider::new(&mut s.wall_mm, 0.8..=6.0).text("Wall (mm)"));
     }
@@ -184,6 +210,15 @@ fn part_status_ui(app: &TraceryApp, ui: &mut egui::Ui) {
     let id = item.id;
     if item.surface.points_mm.len() < tracery_core::surface::MIN_POINTS {
         ui.label(format!("Curve {id}: pick at least two points on the model"));
+        return;
+    }
+    if item.guide {
+        let texture = &app.doc.model.texture;
+        ui.label(if texture.on && texture.settings.direction == Direction::AlongCurves {
+            format!("Curve {id} guides the texture's rows")
+        } else {
+            format!("Curve {id} is a guide: the texture follows it when its rows run along curves")
+        });
         return;
     }
     let running = format!("Synthesizing curve {id} on the model…");

@@ -65,7 +65,7 @@ pub fn submit_texture(app: &mut TraceryApp, now: std::time::Instant) -> bool {
     match (texture.on, app.caches.model(&app.doc.model, &base), app.caches.swatch(&texture.swatch)) {
         (true, Ok(model), Ok(swatch)) => {
             let strokes_mm = match texture.settings.direction {
-                Direction::AlongCurves => app.doc.model.drawn_curves().map(|c| c.surface.points_mm.clone()).collect(),
+                Direction::AlongCurves => app.doc.model.texture_strokes_mm(),
                 _ => Vec::new(),
             };
             let job =

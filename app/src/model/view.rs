@@ -19,12 +19,11 @@ const SELECTED_RGBA: [f32; 4] = [0.95, 0.62, 0.25, 1.0];
 /// Radius of a picked point's mark, points.
 const MARK_RADIUS: f32 = 4.0;
 
-/// The selected curve's picked points over the view, joined in order; those
-/// the model hides are drawn faint.
-fn points_ui(ui: &egui::Ui, out: &View3dOutput, surface: &SurfaceMesh, points_mm: &[[f64; 3]]) {
-    let painter = ui.painter_at(out.response.rect);
+/// Where `points_mm` fall on the screen, each with whether the model
+/// hides it.
+fn marks(out: &View3dOutput, surface: &SurfaceMesh, points_mm: &[[f64; 3]]) -> Vec<(egui::Pos2, bool)> {
     let eye = out.camera.eye_mm.as_dvec3();
-    let marks: Vec<(egui::Pos2, bool)> = points_mm
+    points_mm
         .iter()
         .map(|p| {
             let p = DVec3::from(*p);
@@ -36,7 +35,14 @@ fn points_ui(ui: &egui::Ui, out: &View3dOutput, surface: &SurfaceMesh, points_mm
                 .is_some_and(|hit| hit.position_mm.distance(eye) < to_point.length() - 1e-3 * surface.size_mm());
             (out.to_screen(p.as_vec3()), hidden)
         })
-        .collect();
+        .collect()
+}
+
+/// The selected curve's picked points over the view, joined in order; those
+/// the model hides are drawn faint.
+fn points_ui(ui: &egui::Ui, out: &View3dOutput, surface: &SurfaceMesh, points_mm: &[[f64; 3]]) {
+    let painter = ui.painter_at(out.response.rect);
+    let marks = marks(out, surface, points_mm);
     let line = egui::Stroke::new(1.0, Color32::from_rgba_unmultiplied(90, 150, 240, 140));
     for pair in marks.windows(2) {
         painter.line_segment([pair[0].0, pair[1].0], line);
@@ -50,13 +56,26 @@ fn points_ui(ui: &egui::Ui, out: &View3dOutput, surface: &SurfaceMesh, points_mm
     }
 }
 
+/// The guides that are not selected, which have no pattern to show them:
+/// each a line through its points, faint where the model hides it.
+fn guides_ui(ui: &egui::Ui, out: &View3dOutput, surface: &SurfaceMesh, guides_mm: &[Vec<[f64; 3]>]) {
+    let painter = ui.painter_at(out.response.rect);
+    let seen = Color32::from_rgb(80, 200, 120);
+    for guide in guides_mm {
+        for pair in marks(out, surface, guide).windows(2) {
+            let color = if pair[0].1 || pair[1].1 { seen.gamma_multiply(0.3) } else { seen };
+            painter.line_segment([pair[0].0, pair[1].0], egui::Stroke::new(2.0, color));
+        }
+    }
+}
+
 /// What the view shows: the model with each band and shade on it, each in
 /// its colour; or, once a curve is carved, the object itself (the carved
 /// openings are only in it), in the model's colour. Embossed bands and
 /// shades drawn over the model look as their union does, and drawing both
 /// the object and its parts would make their equal depths flicker.
 fn model_draws(app: &mut TraceryApp, model_view: &std::sync::Arc<crate::view3d::ViewMesh>) -> Vec<Draw> {
-    let carved = app.doc.model.curves.iter().any(|c| c.surface.output == SurfaceOutput::Carve);
+    let carved = app.doc.model.drawn_curves().any(|c| c.surface.output == SurfaceOutput::Carve);
     if let Some(mesh) = app.model_object().filter(|_| carved).and_then(|o| app.caches.view_mesh(&o)) {
         return vec![Draw { mesh, rgba: MODEL_RGBA }];
     }
@@ -102,6 +121,11 @@ pub fn model_view_ui(app: &mut TraceryApp, ui: &mut egui::Ui) {
     let shades = app.doc.model.shades.iter().filter_map(|c| app.shade_worker.output(c.id));
     let frame = shades.filter_map(|p| app.caches.view_mesh(p)).fold(model.view.bounds, |b, m| b.union(&m.bounds));
     let out = view_3d_ui(ui, "model", app.gpu_format, &draws, Some(frame), &mut app.state.model_orbit);
+    let guides: Vec<Vec<[f64; 3]>> = (app.doc.model.curves.iter())
+        .filter(|c| c.guide && app.selected_surface != Some(c.id))
+        .map(|c| c.path_mm())
+        .collect();
+    guides_ui(ui, &out, &model.surface, &guides);
     let points = app.selected_surface.and_then(|id| app.doc.model.curve(id)).map(|c| c.surface.points_mm.clone());
     points_ui(ui, &out, &model.surface, &points.unwrap_or_default());
     let Some((origin, direction)) = out.clicked_ray else { return };
