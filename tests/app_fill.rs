@@ -79,8 +79,8 @@ fn draw_outline(harness: &mut App) -> u64 {
 /// Steps until the predictions are made; returns them.
 fn wait_for_predictions(harness: &mut App) -> Vec<Vec<DVec2>> {
     settle(harness);
-    let paths = harness.state().predicted().expect("predictions on screen");
-    paths.iter().map(|p| p.points_mm.clone()).collect()
+    let prediction = harness.state().predicted().expect("predictions on screen");
+    prediction.paths.iter().map(|p| p.points_mm.clone()).collect()
 }
 
 #[test]
@@ -285,4 +285,87 @@ fn berries_chosen_in_the_app_fill_with_whole_elements_inside_the_outline() {
         let centre = shape.outer.iter().copied().sum::<DVec2>() / shape.outer.len() as f64;
         assert!(inside(&shape.outer, centre), "an element is not a filled shape round its centre");
     }
+}
+
+/// The filled pen shapes of the document: their control polygons, mm.
+fn filled_shapes(harness: &App) -> Vec<Vec<DVec2>> {
+    let app = harness.state();
+    app.doc
+        .curves
+        .iter()
+        .filter(|c| matches!(&c.mode, ModeSettings::Pen(pen) if pen.filled) && c.closed)
+        .map(|c| c.control_points())
+        .collect()
+}
+
+/// Whether two outlines share area: a point of either inside the other.
+fn overlap(a: &[DVec2], b: &[DVec2]) -> bool {
+    a.iter().any(|p| inside(b, *p)) || b.iter().any(|p| inside(a, *p))
+}
+
+#[test]
+fn berries_suggested_are_accepted_as_filled_shapes_that_print_and_clone() {
+    let mut harness = harness(Vec::new());
+    harness.step();
+    choose_region_fill(&mut harness);
+    harness.query_all_by_label("berries").last().expect("the berries' name").scroll_to_me();
+    harness.run_steps(3);
+    harness.query_all_by_label("berries").last().expect("the berries' name").click();
+    harness.step();
+    let fill = draw_outline(&mut harness);
+    click_in_side_panel(&mut harness, "Fill automatically");
+    click_in_side_panel(&mut harness, "Pen");
+
+    // A stalk drawn: berries are suggested beside the paths.
+    drag(&mut harness, &stroke(CENTRE + egui::vec2(-70.0, 40.0), 140.0));
+    settle(&mut harness);
+    let suggested = harness.state().predicted().expect("predictions on screen").clone();
+    assert!(!suggested.elements.is_empty(), "no berries suggested: {} paths", suggested.paths.len());
+    harness.get_by_label_contains("element(s)");
+    // Enter takes them all: each berry a filled pen shape, in one step of undo.
+    let before = harness.state().doc.curves.len();
+    harness.key_press(Key::Enter);
+    harness.run_steps(2);
+    let shapes = filled_shapes(&harness);
+    assert_eq!(shapes.len(), suggested.elements.len(), "{:?}", harness.state().message);
+    assert_eq!(harness.state().doc.curves.len(), before + suggested.paths.len() + suggested.elements.len());
+    // They print with the fill (only what was drawn prints, the fill being off).
+    settle(&mut harness);
+    let print = harness.state().output(fill).expect("the fill's print").clone();
+    for shape in &shapes {
+        let centre = shape.iter().copied().sum::<DVec2>() / shape.len() as f64;
+        assert!(print.region_mm.contains(centre), "an accepted berry at {centre:?} does not print");
+    }
+
+    // Another stalk above: new berries keep off the accepted ones.
+    drag(&mut harness, &stroke(CENTRE + egui::vec2(-70.0, -10.0), 140.0));
+    settle(&mut harness);
+    let again = harness.state().predicted().expect("predictions on screen").clone();
+    for e in &again.elements {
+        assert!(!shapes.iter().any(|s| overlap(&e.outer, s)), "a suggested berry lies on an accepted one");
+    }
+    harness.key_press(Key::Escape);
+    harness.run_steps(2);
+
+    // Clone: the berries in a source rectangle come back in the target.
+    click_in_side_panel(&mut harness, "Clone");
+    drag(&mut harness, &[CENTRE + egui::vec2(-80.0, 10.0), CENTRE + egui::vec2(0.0, 80.0)]);
+    drag(&mut harness, &[CENTRE + egui::vec2(-60.0, -95.0), CENTRE + egui::vec2(20.0, -25.0)]);
+    settle(&mut harness);
+    let cloned = harness.state().predicted().expect("the clone's suggestions").clone();
+    assert!(!cloned.elements.is_empty(), "the clone suggests no berry: {} paths", cloned.paths.len());
+    let (view, rect) = harness.state().canvas_view().expect("the canvas is laid out");
+    let target = tracery_core::geom::Rect::new(
+        view.from_screen(rect, CENTRE + egui::vec2(-60.0, -25.0)),
+        view.from_screen(rect, CENTRE + egui::vec2(20.0, -95.0)),
+    );
+    for e in &cloned.elements {
+        assert!(e.outer.iter().all(|p| p.cmpge(target.min - 0.1).all() && p.cmple(target.max + 0.1).all()));
+    }
+    // Undo takes the accepted berries back at once.
+    for _ in 0..2 {
+        harness.key_press_modifiers(Modifiers::COMMAND, Key::Z);
+        harness.run_steps(2);
+    }
+    assert!(filled_shapes(&harness).is_empty(), "undo leaves {} berries", filled_shapes(&harness).len());
 }

@@ -226,4 +226,27 @@ fn regenerate_berries_screenshot() {
     drive::drag(&mut harness, &drive::circle(egui::pos2(775.0, 410.0), 150.0));
     settle(&mut harness);
     save(&mut harness, "fill-berries.png");
+    // Drawn by hand: a stalk, with berries and stalks suggested round it,
+    // some accepted; then another stalk's suggestions, ghosted.
+    drive::click_in_side_panel(&mut harness, "Fill automatically");
+    drive::click_in_side_panel(&mut harness, "Pen");
+    let wave = |from: egui::Pos2, length: f32| -> Vec<egui::Pos2> {
+        (0..=30)
+            .map(|k| {
+                let t = k as f32 / 30.0;
+                from + egui::vec2(length * t, 12.0 * (t * std::f32::consts::TAU).sin())
+            })
+            .collect()
+    };
+    drive::drag(&mut harness, &wave(egui::pos2(680.0, 470.0), 190.0));
+    settle(&mut harness);
+    harness.key_press(egui::Key::Enter);
+    harness.run_steps(2);
+    drive::drag(&mut harness, &wave(egui::pos2(680.0, 380.0), 190.0));
+    settle(&mut harness);
+    // Closer, to see the berries.
+    harness.hover_at(egui::pos2(775.0, 420.0));
+    harness.event(egui::Event::Zoom(2.2));
+    harness.run_steps(2);
+    save(&mut harness, "fill-berries-autocomplete.png");
 }

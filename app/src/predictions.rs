@@ -1,19 +1,21 @@
-//! Autocomplete and clone in a region fill: suggested paths, ghosted on the
-//! canvas until the person accepts them (all, or those clicked), or
-//! rejects them. Accepted paths become pen strokes, editable as any curve.
+//! Autocomplete and clone in a region fill: suggested paths and elements,
+//! ghosted on the canvas until the person accepts them (all, or those
+//! clicked), or rejects them. Accepted paths become pen strokes, and
+//! accepted elements filled pen shapes, editable as any curve.
 //!
 //! Autocomplete suggests, after each pen stroke in a fill that is not
-//! filled automatically, paths in a window around the stroke that continue
-//! what was drawn (like the fill's exemplar). Clone copies what was drawn
-//! in a source rectangle to a target rectangle: the source's paths are the
-//! exemplar, and the target's own strokes are kept and continued.
+//! filled automatically, paths and elements in a window around the stroke
+//! that continue what was drawn (like the fill's exemplar). Clone copies
+//! what was drawn in a source rectangle to a target rectangle: the
+//! source's paths and filled shapes are the exemplar, and what the target
+//! holds already is kept and continued.
 
 use std::sync::Arc;
 
 use tracery_core::DVec2;
 use tracery_core::control::Control;
-use tracery_core::geom::{Rect, Region, clip_polylines, intersection};
-use tracery_core::region_fill::{CurveExemplar, CurvePath, FillError, Settings, predict};
+use tracery_core::geom::{Polygon, Rect, Region, clip_polylines, intersection};
+use tracery_core::region_fill::{CurveExemplar, CurvePath, Drawn, FillError, Prediction, Settings, predict};
 
 use crate::document::{ModeSettings, PenItem, RegionFillItem};
 use crate::modes::{region_fill, same};
@@ -38,7 +40,7 @@ pub struct PredictJob {
     /// Where they go, mm: the window cut to the fill's region.
     pub window: Arc<Region>,
     /// What is drawn there already, mm.
-    pub drawn: Arc<Vec<CurvePath>>,
+    pub drawn: Arc<Drawn>,
     /// The fill's settings.
     pub settings: Settings,
 }
@@ -53,10 +55,10 @@ impl PartialEq for PredictJob {
 }
 
 impl Job for PredictJob {
-    type Output = Vec<CurvePath>;
+    type Output = Prediction;
     type Error = FillError;
 
-    fn run(&self, control: &Control) -> Result<Vec<CurvePath>, FillError> {
+    fn run(&self, control: &Control) -> Result<Prediction, FillError> {
         predict(&self.exemplar, &self.window, &self.drawn, &self.settings, control)
     }
 }
@@ -80,12 +82,35 @@ pub struct Predictions {
     pub kind: PredictionKind,
     /// The job that makes them.
     pub job: PredictJob,
-    /// The paths picked for "accept selected", by index.
+    /// What was picked for "accept selected", by index: the paths first,
+    /// then the elements ([`suggestion`]).
     pub picked: Vec<usize>,
 }
 
+/// One suggestion of a prediction.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Suggestion<'a> {
+    /// A path.
+    Path(&'a CurvePath),
+    /// An element's shape.
+    Element(&'a Polygon),
+}
+
+/// Suggestion `k` of `prediction`: its paths, then its elements.
+pub fn suggestion(prediction: &Prediction, k: usize) -> Option<Suggestion<'_>> {
+    match prediction.paths.get(k) {
+        Some(path) => Some(Suggestion::Path(path)),
+        None => prediction.elements.get(k - prediction.paths.len()).map(Suggestion::Element),
+    }
+}
+
+/// How many suggestions `prediction` holds.
+pub fn suggestions(prediction: &Prediction) -> usize {
+    prediction.paths.len() + prediction.elements.len()
+}
+
 /// The fill with curve `id`, its settings and its region, or why not.
-fn fill_of(doc: &Document, caches: &Caches, id: u64) -> Result<(RegionFillItem, Region, Vec<CurvePath>), String> {
+fn fill_of(doc: &Document, caches: &Caches, id: u64) -> Result<(RegionFillItem, Region, Drawn), String> {
     let item = doc.curve(id).ok_or("the fill is gone")?;
     let ModeSettings::RegionFill(fill) = &item.mode else { return Err("not a region fill".into()) };
     let outline = caches.smoothed(id).ok_or("the fill's outline is too short")?;
@@ -146,12 +171,19 @@ impl TraceryApp {
             let exemplar = match source {
                 None => self.caches.curve_exemplar(&self.doc, &fill.exemplar).map_err(|e| e.to_string())?,
                 Some(source) => {
-                    let all: Vec<(Vec<DVec2>, bool)> = drawn.iter().map(|p| (p.points_mm.clone(), p.closed)).collect();
-                    let paths: Vec<CurvePath> = clip_polylines(&all, &Region::rectangle(source))
+                    let all: Vec<(Vec<DVec2>, bool)> =
+                        drawn.paths.iter().map(|p| (p.points_mm.clone(), p.closed)).collect();
+                    let source_region = Region::rectangle(source);
+                    let paths: Vec<CurvePath> = clip_polylines(&all, &source_region)
                         .into_iter()
                         .map(|(points_mm, closed)| CurvePath { points_mm, closed })
                         .collect();
-                    let exemplar = CurveExemplar::from_paths("clone source", paths);
+                    // Shapes are copied whole: those wholly in the source.
+                    let shapes: Vec<Polygon> = (drawn.shapes.iter())
+                        .filter(|s| s.outer.iter().all(|p| source_region.contains(*p)))
+                        .cloned()
+                        .collect();
+                    let exemplar = CurveExemplar::from_paths("clone source", paths).with_shapes(shapes);
                     exemplar
                         .validate(fill.settings.delta_mm)
                         .map_err(|e| format!("Nothing to clone in the source rectangle: {e}"))?;
@@ -176,21 +208,28 @@ impl TraceryApp {
         }
     }
 
-    /// The predicted paths, once made.
-    pub fn predicted(&self) -> Option<&Arc<Vec<CurvePath>>> {
+    /// The predictions, once made.
+    pub fn predicted(&self) -> Option<&Arc<Prediction>> {
         self.predictions
             .as_ref()
             .and(self.predictor.output(PREDICTION_ID))
             .filter(|_| !self.predictor.is_stale(PREDICTION_ID))
     }
 
-    /// Picks or unpicks the predicted path within `tolerance_mm` of `p`; returns whether there was one.
+    /// Picks or unpicks the predicted path within `tolerance_mm` of `p`, or
+    /// the element there; returns whether there was one.
     pub fn pick_prediction_at(&mut self, p: DVec2, tolerance_mm: f64) -> bool {
-        let Some(paths) = self.predicted().cloned() else { return false };
-        let nearest = paths
-            .iter()
-            .enumerate()
-            .map(|(k, path)| (k, path.distance_to(p)))
+        let Some(prediction) = self.predicted().cloned() else { return false };
+        let distance = |k: usize| match suggestion(&prediction, k) {
+            Some(Suggestion::Path(path)) => path.distance_to(p),
+            Some(Suggestion::Element(shape)) if shape.contains(p) => 0.0,
+            Some(Suggestion::Element(shape)) => {
+                shape.rings().map(|r| tracery_core::geom::polyline_distance(r, true, p)).fold(f64::MAX, f64::min)
+            }
+            None => f64::MAX,
+        };
+        let nearest = (0..suggestions(&prediction))
+            .map(|k| (k, distance(k)))
             .filter(|&(_, d)| d <= tolerance_mm)
             .min_by(|a, b| a.1.total_cmp(&b.1));
         let (Some((k, _)), Some(predictions)) = (nearest, self.predictions.as_mut()) else { return false };
@@ -203,27 +242,41 @@ impl TraceryApp {
         true
     }
 
-    /// Makes the predicted paths pen strokes (only the picked ones with
-    /// `picked_only`), then forgets the predictions.
+    /// Makes the predicted paths pen strokes, and the predicted elements
+    /// filled pen shapes (only the picked ones with `picked_only`), then
+    /// forgets the predictions.
     pub fn accept_predictions(&mut self, picked_only: bool) {
-        let (Some(paths), Some(predictions)) = (self.predicted().cloned(), self.predictions.take()) else {
+        let (Some(prediction), Some(predictions)) = (self.predicted().cloned(), self.predictions.take()) else {
             self.message = Some(("No predictions to accept yet".into(), true));
             return;
         };
         let pen = PenItem::for_fill(&predictions.job.settings);
-        let mut accepted = 0;
-        for (k, path) in paths.iter().enumerate() {
+        let (mut paths, mut elements) = (0, 0);
+        for k in 0..suggestions(&prediction) {
             if picked_only && !predictions.picked.contains(&k) {
                 continue;
             }
-            let Some((points, _)) = stroke_to_control_points(&path.points_mm, ACCEPTED_SPACING_MM, 0.0) else {
-                continue;
-            };
-            self.doc.add_curve(points, path.closed, ModeSettings::Pen(pen.clone()));
-            accepted += 1;
+            match suggestion(&prediction, k) {
+                Some(Suggestion::Path(path)) if path.points_mm.len() >= 2 => {
+                    // A path too short to space control points along (a
+                    // berry's stalk) keeps its own points rather than being lost.
+                    let points = stroke_to_control_points(&path.points_mm, ACCEPTED_SPACING_MM, 0.0)
+                        .map_or_else(|| path.points_mm.clone(), |(points, _)| points);
+                    self.doc.add_curve(points, path.closed, ModeSettings::Pen(pen.clone()));
+                    paths += 1;
+                }
+                Some(Suggestion::Element(shape)) => {
+                    // Every corner kept: an element is small, and its shape is what makes it one.
+                    let filled = PenItem { filled: true, ..pen.clone() };
+                    self.doc.add_curve(shape.outer.clone(), true, ModeSettings::Pen(filled));
+                    elements += 1;
+                }
+                _ => {}
+            }
         }
         self.predictor.retain(&[]);
-        self.message = Some((format!("Accepted {accepted} path(s) as pen strokes"), false));
+        let shapes = if elements > 0 { format!(" and {elements} element(s) as filled shapes") } else { String::new() };
+        self.message = Some((format!("Accepted {paths} path(s) as pen strokes{shapes}"), false));
     }
 
     /// Forgets the predictions.

@@ -11,7 +11,7 @@ use tiny_skia::{Color, Pixmap};
 use tracery_core::DVec2;
 use tracery_core::control::Control;
 use tracery_core::geom::{Rect, Region, clip_polylines};
-use tracery_core::region_fill::{BUILTIN_CURVES, CurveExemplar, CurvePath, Settings, predict};
+use tracery_core::region_fill::{BUILTIN_CURVES, CurveExemplar, CurvePath, Drawn, Settings, predict};
 
 #[path = "common/sheet.rs"]
 mod sheet;
@@ -51,7 +51,9 @@ fn main() {
             .filter(|p| p.length_mm() > 1.0)
             .collect();
         let start = std::time::Instant::now();
-        let predicted = predict(&exemplar, &window, &drawn, &Settings::default(), &Control::default());
+        let predicted =
+            predict(&exemplar, &window, &Drawn::paths(drawn.clone()), &Settings::default(), &Control::default())
+                .map(|p| p.paths);
         let ms = start.elapsed().as_secs_f64() * 1e3;
         let origin = (k as f32 * side + 2.0 * SCALE, 2.0 * SCALE);
         draw(&mut sheet, &drawn, origin, (20, 20, 20));

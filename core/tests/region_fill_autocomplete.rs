@@ -5,9 +5,9 @@
 
 use tracery_core::DVec2;
 use tracery_core::control::Control;
-use tracery_core::geom::{Rect, Region, clip_polylines};
-use tracery_core::quality::{coverage, curve_statistics};
-use tracery_core::region_fill::{CurveExemplar, CurvePath, Settings, predict};
+use tracery_core::geom::{Polygon, Rect, Region, clip_polylines};
+use tracery_core::quality::{coverage, curve_statistics, element_statistics};
+use tracery_core::region_fill::{CurveExemplar, CurvePath, Drawn, Settings, make_product_around, predict};
 
 const WINDOW_MM: f64 = 40.0;
 const STRIP_MM: f64 = 12.0;
@@ -38,7 +38,8 @@ fn predictions_continue_what_was_drawn_without_crossing_it() {
     for name in ["crackle", "meander", "vine", "scales"] {
         let exemplar = CurveExemplar::builtin(name).unwrap();
         let drawn = drawn_strip(&exemplar);
-        let predicted = predict(&exemplar, &window, &drawn, &settings, &Control::default()).unwrap();
+        let predicted =
+            predict(&exemplar, &window, &Drawn::paths(drawn.clone()), &settings, &Control::default()).unwrap().paths;
         assert!(!predicted.is_empty(), "{name}: nothing predicted");
         // Where the strip cut a drawn path off inside the window, the
         // pattern goes on: a predicted path starts there, or runs through
@@ -75,9 +76,80 @@ fn with_nothing_drawn_the_prediction_is_a_plain_fill() {
     let exemplar = CurveExemplar::builtin("waves").unwrap();
     let window = Region::rectangle(&Rect::new(DVec2::ZERO, DVec2::splat(WINDOW_MM)));
     let settings = Settings::default();
-    let alone = predict(&exemplar, &window, &[], &settings, &Control::default()).unwrap();
+    let alone = predict(&exemplar, &window, &Drawn::default(), &settings, &Control::default()).unwrap();
     // Strokes far away are no context: the same paths as with nothing drawn.
     let far = CurvePath { points_mm: vec![DVec2::new(500.0, 500.0), DVec2::new(540.0, 500.0)], closed: false };
-    let with_far = predict(&exemplar, &window, &[far], &settings, &Control::default()).unwrap();
+    let with_far = predict(&exemplar, &window, &Drawn::paths(vec![far]), &settings, &Control::default()).unwrap();
     assert_eq!(alone, with_far);
+}
+
+/// The berries' stalks and berries in the strip, as a person would have
+/// drawn and accepted them: what lies wholly in the strip.
+fn drawn_berries(exemplar: &CurveExemplar, settings: &Settings) -> (Drawn, Vec<Polygon>) {
+    let learned = exemplar.curves(settings.delta_mm);
+    let low = Rect::from_points(learned.paths.iter().flat_map(|p| p.points_mm.iter().copied())).unwrap().min;
+    let strip = Rect::new(DVec2::ZERO, DVec2::new(WINDOW_MM, STRIP_MM));
+    let inside = |p: DVec2| p.cmpge(strip.min).all() && p.cmple(strip.max).all();
+    let shapes: Vec<Polygon> = learned
+        .elements
+        .polygons()
+        .into_iter()
+        .map(|s| s.map_points(|p| p - low))
+        .filter(|s| s.outer.iter().all(|p| inside(*p)))
+        .collect();
+    (Drawn { paths: drawn_strip(exemplar), shapes: shapes.clone() }, learned.elements.polygons())
+}
+
+/// The centre of a shape (the mean of its outer points), as
+/// `element_statistics` takes it.
+fn centre(shape: &Polygon) -> DVec2 {
+    shape.outer.iter().copied().sum::<DVec2>() / shape.outer.len() as f64
+}
+
+#[test]
+fn berries_drawn_stay_and_predicted_berries_go_on_beside_them() {
+    let settings = Settings::default();
+    let exemplar = CurveExemplar::builtin("berries").unwrap();
+    let (drawn, ex_shapes) = drawn_berries(&exemplar, &settings);
+    assert!(drawn.shapes.len() >= 3, "{} berries in the strip", drawn.shapes.len());
+    let whole_window = Rect::new(DVec2::ZERO, DVec2::splat(WINDOW_MM));
+    let window = Region::rectangle(&whole_window);
+    let predicted = predict(&exemplar, &window, &drawn, &settings, &Control::default()).unwrap();
+    assert!(!predicted.elements.is_empty(), "no berries suggested");
+    // Whole: each an exemplar's shape, by area.
+    let areas: Vec<f64> = ex_shapes.iter().map(Polygon::area).collect();
+    assert!(predicted.elements.iter().all(|e| areas.iter().any(|a| (a - e.area()).abs() < 1e-9)));
+    // Drawn and suggested together, away from the window's edge (where a
+    // berry the edge would cut is left out), are dense enough. Suggestions
+    // are sparser than the exemplar: 0.65 to 0.8 of it over seeds 1 to 4
+    // (`docs/region-fill.md`).
+    let learned = exemplar.curves(settings.delta_mm);
+    let ex_points = learned.paths.iter().flat_map(|p| p.points_mm.iter().copied());
+    let ex_bounds = Rect::from_points(ex_points.chain(ex_shapes.iter().flat_map(|s| s.outer.iter().copied()))).unwrap();
+    let ex = element_statistics(&ex_shapes, &[], &ex_bounds, 0.0);
+    let all: Vec<Polygon> = drawn.shapes.iter().chain(&predicted.elements).cloned().collect();
+    let out = element_statistics(&all, &[], &whole_window, settings.radius_mm());
+    assert!(out.per_100mm2 >= 0.6 * ex.per_100mm2, "{out:?} against {ex:?}");
+    // Nothing suggested lies on a drawn berry, or nearer one than the
+    // exemplar's two closest berries are to each other.
+    let all = element_statistics(&all, &[], &whole_window, 0.0);
+    assert_eq!(all.overlapping_pairs, 0, "a suggested berry lies on a drawn one");
+    let centres: Vec<DVec2> = ex_shapes.iter().map(centre).collect();
+    let closest = (0..centres.len())
+        .flat_map(|a| (a + 1..centres.len()).map(move |b| (a, b)))
+        .map(|(a, b)| centres[a].distance(centres[b]))
+        .fold(f64::MAX, f64::min);
+    for e in &predicted.elements {
+        let gap = drawn.shapes.iter().map(|d| centre(d).distance(centre(e))).fold(f64::MAX, f64::min);
+        assert!(
+            gap >= 0.8 * closest,
+            "a suggested berry {gap:.1} mm from a drawn one; the exemplar's closest {closest:.1}"
+        );
+    }
+    // The fill around them prints them too: each drawn berry's centre is in the solid.
+    let product = make_product_around(&exemplar, &window, &drawn, &settings, &Control::default()).unwrap();
+    for shape in &drawn.shapes {
+        let c = centre(shape);
+        assert!(product.region_mm.contains(c), "the drawn berry at {c} is not printed");
+    }
 }

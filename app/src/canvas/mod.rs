@@ -13,10 +13,11 @@ pub use view::{MAX_POINTS_PER_MM, MIN_POINTS_PER_MM, View};
 
 use egui::{Color32, PointerButton, Sense, Stroke};
 use tracery_core::DVec2;
-use tracery_core::geom::Rect;
+use tracery_core::geom::{Rect, Region, fill_triangles};
 
 use crate::TraceryApp;
 use crate::modes;
+use crate::predictions::{Suggestion, suggestion, suggestions};
 use crate::tools::avoid::painted;
 use crate::tools::edit::{EditDrag, PICK_RADIUS_POINTS};
 use crate::tools::{Gesture, Tool, draw, pan};
@@ -287,11 +288,19 @@ fn predictions_ui(app: &TraceryApp, painter: &egui::Painter, rect: egui::Rect) {
         let stroke = Stroke::new(1.0, PREDICTION_WINDOW);
         painter.add(polyline(&view, rect, ring, true, stroke));
     }
-    let Some(paths) = app.predicted() else { return };
+    let Some(prediction) = app.predicted() else { return };
     let width = (predictions.job.settings.stroke_width_mm as f32 * view.points_per_mm).max(1.5);
-    for (k, path) in paths.iter().enumerate() {
+    for k in 0..suggestions(prediction) {
         let color = if predictions.picked.contains(&k) { PICKED } else { GHOST };
-        painter.add(polyline(&view, rect, &path.points_mm, path.closed, Stroke::new(width, color)));
+        match suggestion(prediction, k) {
+            Some(Suggestion::Path(path)) => {
+                painter.add(polyline(&view, rect, &path.points_mm, path.closed, Stroke::new(width, color)));
+            }
+            Some(Suggestion::Element(shape)) => {
+                painter.add(fill(&view, rect, &fill_triangles(&Region::new(vec![shape.clone()])), color));
+            }
+            None => {}
+        }
     }
 }
 

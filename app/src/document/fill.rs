@@ -54,12 +54,22 @@ pub struct PenItem {
     pub width_mm: f64,
     /// The printed thickness, mm.
     pub thickness_mm: f64,
+    /// Whether a closed stroke is a filled shape (its outline the curve,
+    /// the width unused): a discrete element such as a berry or a dot.
+    pub filled: bool,
+}
+
+impl PenItem {
+    /// Whether a stroke with this pen along a curve that is `closed` is a filled shape.
+    pub fn fills(&self, closed: bool) -> bool {
+        self.filled && closed
+    }
 }
 
 impl PenItem {
     /// A pen drawing like the strokes of a fill with `settings`.
     pub fn for_fill(settings: &region_fill::Settings) -> PenItem {
-        PenItem { width_mm: settings.stroke_width_mm, thickness_mm: settings.thickness_mm }
+        PenItem { width_mm: settings.stroke_width_mm, thickness_mm: settings.thickness_mm, filled: false }
     }
 }
 

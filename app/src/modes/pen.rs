@@ -6,10 +6,10 @@ use std::sync::Arc;
 
 use tracery_core::Product;
 use tracery_core::curve::Curve;
-use tracery_core::geom::{brush_stroke, count_topology, fill_triangles};
+use tracery_core::geom::{Region, brush_stroke, count_topology, fill_triangles};
 use tracery_core::mesh::extrude;
 use tracery_core::product::StrokedPath;
-use tracery_core::region_fill::FillError;
+use tracery_core::region_fill::{FillError, region_from_outlines};
 
 use super::{ModeEnv, ModeJob, ModeUi, same};
 use crate::document::{Document, DocumentError, ModeSettings, PenItem};
@@ -36,19 +36,27 @@ impl PartialEq for PenJob {
 }
 
 impl PenJob {
-    /// The stroke's outline and, outside a fill, its solid.
+    /// The stroke's outline (or the filled shape) and, outside a fill, its solid.
     pub fn run(&self) -> Result<Product, FillError> {
         let closed = self.curve.is_closed();
-        let region = brush_stroke(self.curve.points(), self.pen.width_mm, closed);
+        let filled = self.pen.fills(closed);
+        let region = if filled {
+            region_from_outlines(&[self.curve.points().to_vec()])?
+        } else {
+            brush_stroke(self.curve.points(), self.pen.width_mm, closed)
+        };
         let topology = count_topology(&region);
         let mesh_mm = if self.in_fill { None } else { Some(extrude(&region, self.pen.thickness_mm)?) };
+        let paths_mm = if filled {
+            Vec::new()
+        } else {
+            vec![StrokedPath { points_mm: self.curve.points().to_vec(), closed, width_mm: self.pen.width_mm }]
+        };
         let mut product = Product {
             fill_mm: fill_triangles(&region),
-            paths_mm: vec![StrokedPath {
-                points_mm: self.curve.points().to_vec(),
-                closed,
-                width_mm: self.pen.width_mm,
-            }],
+            paths_mm,
+            // A filled shape is drawn filled in the SVG.
+            filled_mm: if filled { region.clone() } else { Region::default() },
             mesh_mm,
             topology: topology.into(),
             ..Product::default()
@@ -76,7 +84,11 @@ impl ModeUi for PenUi {
 
     fn settings_ui(&self, ui: &mut egui::Ui, settings: &mut ModeSettings, _env: &mut ModeEnv<'_>) {
         let ModeSettings::Pen(pen) = settings else { return };
-        ui.add(egui::Slider::new(&mut pen.width_mm, 0.3..=5.0).text("Pen width (mm)"));
+        ui.checkbox(&mut pen.filled, "Filled").on_hover_text(
+            "A closed stroke is a filled shape, such as a berry or a dot; in a fill like one of its exemplar's \
+             elements, it is that element",
+        );
+        ui.add_enabled(!pen.filled, egui::Slider::new(&mut pen.width_mm, 0.3..=5.0).text("Pen width (mm)"));
         ui.add(egui::Slider::new(&mut pen.thickness_mm, 0.4..=10.0).text("Thickness (mm)"));
         ui.label(
             egui::RichText::new("Inside a region fill, pen strokes are yours: the fill grows around them.").weak(),

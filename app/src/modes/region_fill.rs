@@ -11,7 +11,7 @@ use tracery_core::control::Control;
 use tracery_core::curve::Curve;
 use tracery_core::geom::{Rect, Region, fill_triangles};
 use tracery_core::region_fill::{
-    BUILTIN_CURVES, CurveExemplar, CurvePath, FillError, Settings, make_product_around, print_drawn,
+    BUILTIN_CURVES, CurveExemplar, CurvePath, Drawn, FillError, Settings, make_product_around, print_drawn,
     region_from_outlines,
 };
 
@@ -35,8 +35,8 @@ pub struct RegionFillJob {
     pub outline: Arc<Curve>,
     /// The curve exemplar.
     pub exemplar: Arc<CurveExemplar>,
-    /// Pen strokes inside the region, mm.
-    pub drawn: Arc<Vec<CurvePath>>,
+    /// Pen strokes and filled shapes inside the region, mm.
+    pub drawn: Arc<Drawn>,
     /// The settings.
     pub settings: Settings,
     /// Whether the region is filled around the strokes, or only they print.
@@ -70,16 +70,23 @@ impl RegionFillJob {
     }
 }
 
-/// The pen strokes drawn in the fill with smoothed outline `outline`, as smoothed paths, mm.
-pub fn drawn_in(outline: &[DVec2], doc: &Document, caches: &Caches) -> Vec<CurvePath> {
-    doc.curves
-        .iter()
-        .filter(|c| matches!(c.mode, ModeSettings::Pen(_)))
-        .filter_map(|c| {
-            let curve = caches.smoothed(c.id).filter(|curve| inside(outline, curve.points()))?;
-            Some(CurvePath { points_mm: curve.points().to_vec(), closed: curve.is_closed() })
-        })
-        .collect()
+/// What was drawn with the pen in the fill with smoothed outline
+/// `outline`, mm: strokes as smoothed paths, and filled shapes.
+pub fn drawn_in(outline: &[DVec2], doc: &Document, caches: &Caches) -> Drawn {
+    let mut drawn = Drawn::default();
+    for c in &doc.curves {
+        let ModeSettings::Pen(pen) = &c.mode else { continue };
+        let Some(curve) = caches.smoothed(c.id).filter(|curve| inside(outline, curve.points())) else { continue };
+        if pen.fills(curve.is_closed()) {
+            // A shape that does not close on itself has nothing to fill.
+            if let Ok(shape) = region_from_outlines(&[curve.points().to_vec()]) {
+                drawn.shapes.extend(shape.polygons);
+            }
+        } else {
+            drawn.paths.push(CurvePath { points_mm: curve.points().to_vec(), closed: curve.is_closed() });
+        }
+    }
+    drawn
 }
 
 /// One curve exemplar's thumbnail; clicked to choose it.

@@ -89,10 +89,13 @@ fn predictions_ui(app: &mut TraceryApp, ui: &mut egui::Ui) {
     let picked = predictions.picked.len();
     ui.separator();
     ui.label(RichText::new(what).strong());
-    let ready = app.predicted().map(|p| p.len());
+    let ready = app.predicted().map(|p| (p.paths.len(), p.elements.len()));
     match (ready, app.predictor.state(crate::predictions::PREDICTION_ID)) {
-        (Some(n), _) => {
+        (Some((n, 0)), _) => {
             ui.label(format!("{n} suggested path(s), {picked} picked; click a path to pick it"));
+        }
+        (Some((n, e)), _) => {
+            ui.label(format!("{n} suggested path(s) and {e} element(s), {picked} picked; click one to pick it"));
         }
         (None, Some(crate::worker::JobState::Done(Err(e)))) => {
             ui.colored_label(ui.visuals().error_fg_color, e.to_string());

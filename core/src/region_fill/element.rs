@@ -20,6 +20,11 @@ pub const ELEMENT_MAX_SPACINGS: f64 = 6.0;
 /// ring or a leaf turned another way.
 pub const SAME_KIND_SHARE: f64 = 0.05;
 
+/// A shape a person drew (or accepted and then edited) is taken for a kind
+/// when it is this alike ([`SAME_KIND_SHARE`]'s measure): looser, since its
+/// outline went through the canvas's smoothing.
+pub const DRAWN_KIND_SHARE: f64 = 0.10;
+
 /// An element of a pattern: its kind, and where its centre lies.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct PlacedElement {
@@ -61,7 +66,7 @@ impl Elements {
     pub fn add(&mut self, polygon: &Polygon) {
         let centre_mm = centroid(polygon);
         let shape = polygon.map_points(|p| p - centre_mm);
-        let kind = match self.kinds.iter().position(|k| same_shape(k, &shape)) {
+        let kind = match self.kinds.iter().position(|k| same_shape(k, &shape, SAME_KIND_SHARE)) {
             Some(k) => k,
             None => {
                 self.kinds.push(shape);
@@ -69,6 +74,38 @@ impl Elements {
             }
         };
         self.placed.push(PlacedElement { kind: kind as u32, centre_mm });
+    }
+
+    /// `polygon` (mm) as an element of the kind most like it, within
+    /// [`DRAWN_KIND_SHARE`]; `None` when no kind is that alike.
+    ///
+    /// ```
+    /// use tracery_core::DVec2;
+    /// use tracery_core::geom::Polygon;
+    /// use tracery_core::region_fill::Elements;
+    /// let square = |at: DVec2, side: f64| Polygon {
+    ///     outer: vec![at, at + DVec2::X * side, at + DVec2::ONE * side, at + DVec2::Y * side],
+    ///     holes: vec![],
+    /// };
+    /// let mut elements = Elements::default();
+    /// elements.add(&square(DVec2::ZERO, 2.0));
+    /// elements.add(&square(DVec2::ZERO, 4.0));
+    /// let like = elements.like(&square(DVec2::new(10.0, 0.0), 3.9)).unwrap();
+    /// assert_eq!(like.kind, 1);
+    /// assert!(like.centre_mm.distance(DVec2::new(11.95, 1.95)) < 1e-9);
+    /// assert!(elements.like(&square(DVec2::ZERO, 3.0)).is_none());
+    /// ```
+    pub fn like(&self, polygon: &Polygon) -> Option<PlacedElement> {
+        let centre_mm = centroid(polygon);
+        let shape = polygon.map_points(|p| p - centre_mm);
+        let unlikeness = |k: &Polygon| {
+            let diagonal = size(k).length().max(size(&shape).length());
+            (same_shape(k, &shape, DRAWN_KIND_SHARE)).then(|| farthest(k, &shape).max(farthest(&shape, k)) / diagonal)
+        };
+        let (kind, _) = (self.kinds.iter().enumerate())
+            .filter_map(|(k, kind)| Some((k, unlikeness(kind)?)))
+            .min_by(|a, b| a.1.total_cmp(&b.1))?;
+        Some(PlacedElement { kind: kind as u32, centre_mm })
     }
 
     /// Whether there are no elements.
@@ -128,13 +165,25 @@ pub fn centroid(polygon: &Polygon) -> DVec2 {
     }
 }
 
-/// Whether two shapes, each about its centroid, are alike within
-/// [`SAME_KIND_SHARE`] of the larger's diagonal.
-fn same_shape(a: &Polygon, b: &Polygon) -> bool {
-    let size = |p: &Polygon| Rect::from_points(p.outer.iter().copied()).map_or(DVec2::ZERO, |r| r.size());
+/// The size of a shape's bounding box.
+fn size(p: &Polygon) -> DVec2 {
+    Rect::from_points(p.outer.iter().copied()).map_or(DVec2::ZERO, |r| r.size())
+}
+
+/// How far the point of `from`'s outlines farthest from `to`'s lies from them.
+fn farthest(from: &Polygon, to: &Polygon) -> f64 {
+    from.rings()
+        .flatten()
+        .map(|&p| to.rings().map(|ring| polyline_distance(ring, true, p)).fold(f64::INFINITY, f64::min))
+        .fold(0.0, f64::max)
+}
+
+/// Whether two shapes, each about its centroid, are alike within `share`
+/// of the larger's diagonal.
+fn same_shape(a: &Polygon, b: &Polygon, share: f64) -> bool {
     let (size_a, size_b) = (size(a), size(b));
     let diagonal = size_a.length().max(size_b.length());
-    let tolerance = SAME_KIND_SHARE * diagonal;
+    let tolerance = share * diagonal;
     // Cheap refusals first: an exemplar may hold hundreds of shapes.
     if a.holes.len() != b.holes.len()
         || (size_a - size_b).abs().max_element() > 2.0 * tolerance

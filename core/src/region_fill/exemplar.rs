@@ -59,15 +59,30 @@ impl CurveExemplar {
         CurveExemplar { name: name.into(), paths, shapes: Vec::new(), elements: Elements::default() }
     }
 
+    /// The same exemplar with filled `shapes` (mm) added, each
+    /// polygon's outer ring also among its paths.
+    ///
+    /// ```
+    /// use tracery_core::DVec2;
+    /// use tracery_core::geom::disc;
+    /// use tracery_core::region_fill::CurveExemplar;
+    /// let dots = CurveExemplar::from_paths("dots", vec![])
+    ///     .with_shapes(vec![disc(DVec2::ZERO, 1.0, 16), disc(DVec2::new(4.0, 0.0), 1.0, 16)]);
+    /// assert_eq!((dots.paths.len(), dots.shapes.len()), (2, 2));
+    /// assert_eq!(dots.curves(0.5).elements.kinds.len(), 1, "two dots alike");
+    /// ```
+    pub fn with_shapes(mut self, shapes: Vec<Polygon>) -> CurveExemplar {
+        for polygon in shapes {
+            let first_path = self.paths.len();
+            self.paths.push(CurvePath { points_mm: polygon.outer.clone(), closed: true });
+            self.shapes.push(FilledShape { polygon, first_path });
+        }
+        self
+    }
+
     /// The built-in `name`, or `None`.
     pub fn builtin(name: &str) -> Option<CurveExemplar> {
-        let mut exemplar = CurveExemplar::from_paths(name, builtin_strokes(name)?);
-        for polygon in builtin_shapes(name) {
-            let first_path = exemplar.paths.len();
-            exemplar.paths.push(CurvePath { points_mm: polygon.outer.clone(), closed: true });
-            exemplar.shapes.push(FilledShape { polygon, first_path });
-        }
-        Some(exemplar)
+        Some(CurveExemplar::from_paths(name, builtin_strokes(name)?).with_shapes(builtin_shapes(name)))
     }
 
     /// Every subpath of an SVG drawing's stroked paths, and the outline of

@@ -43,7 +43,7 @@ pub use neighbourhood::{
     neighbourhood_distance, unmatched_cost,
 };
 pub use orientation::{EdgeTangents, THROUGH_TOLERANCE, assign_orientations};
-pub use pipeline::{PREDICTION_ITERATIONS, make_product, make_product_around, predict, print_drawn};
+pub use pipeline::{Drawn, PREDICTION_ITERATIONS, Prediction, make_product, make_product_around, predict, print_drawn};
 pub use reconstruct::{CORNER_TURN, SMOOTH_TOLERANCE_MM, smooth_paths, smooth_paths_oriented};
 pub use region::{MAX_FILL_SAMPLES, REGION_TOLERANCE_MM, check_region, parse_region, region_from_outlines};
 pub use sample_graph::{

@@ -15,8 +15,8 @@ use glam::DVec2;
 
 use super::fragments::{degrees, key};
 use super::{
-    CurveExemplar, CurvePath, Elements, FillError, FragmentLimits, JOIN_TOLERANCE_MM, SampleGraph, Settings,
-    Synthesized, check_region, join_drawn_ends, smooth_paths_oriented, synthesize_oriented,
+    CurveExemplar, CurvePath, Elements, FillError, FragmentLimits, JOIN_TOLERANCE_MM, PlacedElement, SampleGraph,
+    Settings, Synthesized, check_region, join_drawn_ends, smooth_paths_oriented, synthesize_oriented,
 };
 
 /// Paths left shorter than this many sample spacings by clipping are
@@ -53,44 +53,87 @@ pub fn make_product(
     settings: &Settings,
     control: &Control,
 ) -> Result<Product, FillError> {
-    make_product_around(exemplar, region, &[], settings, control)
+    make_product_around(exemplar, region, &Drawn::default(), settings, control)
 }
 
-/// As [`make_product`], around paths a person drew (`drawn`, mm): the fill
-/// grows out of them and joins them ([`synthesize_around`]). The product's
-/// paths are the new ones; its print holds the drawn ones too, so that
-/// *one piece* and the counts see the whole.
+/// What a person drew in a region, mm: pen strokes, and filled shapes
+/// (the discrete elements they drew or accepted).
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct Drawn {
+    /// The strokes.
+    pub paths: Vec<CurvePath>,
+    /// The filled shapes.
+    pub shapes: Vec<Polygon>,
+}
+
+impl Drawn {
+    /// Strokes alone.
+    pub fn paths(paths: Vec<CurvePath>) -> Drawn {
+        Drawn { paths, shapes: Vec::new() }
+    }
+
+    /// Whether nothing was drawn.
+    pub fn is_empty(&self) -> bool {
+        self.paths.is_empty() && self.shapes.is_empty()
+    }
+}
+
+/// What autocomplete or clone suggests: new paths, and new discrete
+/// elements whole.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct Prediction {
+    /// Smoothed and clipped to the region, mm.
+    pub paths: Vec<CurvePath>,
+    /// The shapes of the elements lying wholly within the region, none
+    /// overlapping a drawn shape, mm.
+    pub elements: Vec<Polygon>,
+}
+
+impl Prediction {
+    /// Whether nothing is suggested.
+    pub fn is_empty(&self) -> bool {
+        self.paths.is_empty() && self.elements.is_empty()
+    }
+}
+
+/// As [`make_product`], around what a person drew (`drawn`, mm): the fill
+/// grows out of the strokes and joins them ([`synthesize_around`]), and
+/// shapes like the exemplar's elements stay where they are, among the new
+/// ones. The product's paths and elements are the new ones; its print
+/// holds the drawn ones too, so that *one piece* and the counts see the
+/// whole.
 pub fn make_product_around(
     exemplar: &CurveExemplar,
     region: &Region,
-    drawn: &[CurvePath],
+    drawn: &Drawn,
     settings: &Settings,
     control: &Control,
 ) -> Result<Product, FillError> {
     let mut timings = Timings::default();
     let predicted = predict_timed(exemplar, region, drawn, settings, control, &mut timings)?;
     // Everything may also go as fragments or outside the region.
-    if predicted.paths.is_empty() && predicted.elements.is_empty() && drawn.is_empty() {
+    if predicted.is_empty() && drawn.is_empty() {
         let bounds = region.bounds().ok_or(FillError::EmptyRegion)?;
         return Err(nothing_left(exemplar, &bounds, settings.exemplar_scale, settings));
     }
     finish(predicted, region, drawn, settings, control, timings)
 }
 
-/// What prints of the paths a person `drawn` in `region` (mm) alone, with
+/// What prints of what a person `drawn` in `region` (mm) alone, with
 /// the frame: a fill not filled automatically.
 ///
 /// ```
 /// use tracery_core::DVec2;
 /// use tracery_core::control::Control;
-/// use tracery_core::region_fill::{CurvePath, Settings, parse_region, print_drawn};
+/// use tracery_core::region_fill::{CurvePath, Drawn, Settings, parse_region, print_drawn};
 /// let drawn = CurvePath { points_mm: vec![DVec2::new(5.0, 20.0), DVec2::new(35.0, 20.0)], closed: false };
-/// let product = print_drawn(&parse_region("rect:40x40").unwrap(), &[drawn], &Settings::default(), &Control::default()).unwrap();
+/// let region = parse_region("rect:40x40").unwrap();
+/// let product = print_drawn(&region, &Drawn::paths(vec![drawn]), &Settings::default(), &Control::default()).unwrap();
 /// assert_eq!(product.topology.components, 1);
 /// ```
 pub fn print_drawn(
     region: &Region,
-    drawn: &[CurvePath],
+    drawn: &Drawn,
     settings: &Settings,
     control: &Control,
 ) -> Result<Product, FillError> {
@@ -98,7 +141,7 @@ pub fn print_drawn(
     if region.is_empty() {
         return Err(FillError::EmptyRegion);
     }
-    finish(Predicted::default(), region, drawn, settings, control, Timings::default())
+    finish(Prediction::default(), region, drawn, settings, control, Timings::default())
 }
 
 /// Exemplars of at most this many lines, and no elements, that fit the
@@ -122,18 +165,19 @@ fn nothing_left(exemplar: &CurveExemplar, bounds: &Rect, scale: f64, settings: &
     }
 }
 
-/// The product of what was `predicted` and the paths `drawn` in `region`.
+/// The product of what was `predicted` and what was `drawn` in `region`.
 fn finish(
-    predicted: Predicted,
+    predicted: Prediction,
     region: &Region,
-    drawn: &[CurvePath],
+    drawn: &Drawn,
     settings: &Settings,
     control: &Control,
     mut timings: Timings,
 ) -> Result<Product, FillError> {
-    let Predicted { paths, elements } = predicted;
-    let printed: Vec<CurvePath> = paths.iter().chain(&clip_paths(drawn, region, 0.0)).cloned().collect();
-    let (print, bridges) = timings.time("strokes", || print_region(&printed, &elements, region, settings));
+    let Prediction { paths, elements } = predicted;
+    let printed: Vec<CurvePath> = paths.iter().chain(&clip_paths(&drawn.paths, region, 0.0)).cloned().collect();
+    let shapes: Vec<Polygon> = elements.iter().chain(&drawn.shapes).cloned().collect();
+    let (print, bridges) = timings.time("strokes", || print_region(&printed, &shapes, region, settings));
     control.check()?;
     let topology = count_topology(&print);
     // Nothing drawn yet in a fill that is not filled automatically prints nothing.
@@ -169,50 +213,42 @@ fn finish(
 /// (`docs/region-fill.md` compares 5 and 7).
 pub const PREDICTION_ITERATIONS: usize = 5;
 
-/// New paths like `exemplar` in `region` (mm) that continue what was
-/// `drawn`: the autocomplete's predictions, and the clone's when the
-/// exemplar is the source region's paths. Synthesized over the region's
-/// bounds with at most [`PREDICTION_ITERATIONS`] steps per level, cleared
-/// of stray fragments, smoothed and clipped to the region.
+/// New paths and elements like `exemplar` in `region` (mm) that continue
+/// what was `drawn`: the autocomplete's predictions, and the clone's when
+/// the exemplar is the source region's paths and shapes. Synthesized over
+/// the region's bounds with at most [`PREDICTION_ITERATIONS`] steps per
+/// level, cleared of stray fragments, smoothed and clipped to the region.
 ///
 /// ```no_run
 /// use tracery_core::DVec2;
 /// use tracery_core::control::Control;
-/// use tracery_core::region_fill::{CurveExemplar, CurvePath, Settings, parse_region, predict};
+/// use tracery_core::region_fill::{CurveExemplar, CurvePath, Drawn, Settings, parse_region, predict};
 /// let drawn = CurvePath { points_mm: vec![DVec2::new(5.0, 20.0), DVec2::new(35.0, 20.0)], closed: false };
 /// let window = parse_region("rect:40x40").unwrap();
 /// let exemplar = CurveExemplar::builtin("waves").unwrap();
-/// let paths = predict(&exemplar, &window, &[drawn], &Settings::default(), &Control::default()).unwrap();
-/// assert!(!paths.is_empty());
+/// let drawn = Drawn::paths(vec![drawn]);
+/// let predicted = predict(&exemplar, &window, &drawn, &Settings::default(), &Control::default()).unwrap();
+/// assert!(!predicted.paths.is_empty());
 /// ```
 pub fn predict(
     exemplar: &CurveExemplar,
     region: &Region,
-    drawn: &[CurvePath],
+    drawn: &Drawn,
     settings: &Settings,
     control: &Control,
-) -> Result<Vec<CurvePath>, FillError> {
+) -> Result<Prediction, FillError> {
     let settings = Settings { iterations: settings.iterations.min(PREDICTION_ITERATIONS), ..settings.clone() };
-    Ok(predict_timed(exemplar, region, drawn, &settings, control, &mut Timings::default())?.paths)
-}
-
-/// What a fill made in its region: paths, and discrete elements whole.
-#[derive(Clone, Debug, Default)]
-struct Predicted {
-    /// Smoothed and clipped to the region, mm.
-    paths: Vec<CurvePath>,
-    /// The shapes of the elements lying wholly within the region, mm.
-    elements: Vec<Polygon>,
+    predict_timed(exemplar, region, drawn, &settings, control, &mut Timings::default())
 }
 
 fn predict_timed(
     exemplar: &CurveExemplar,
     region: &Region,
-    drawn: &[CurvePath],
+    drawn: &Drawn,
     settings: &Settings,
     control: &Control,
     timings: &mut Timings,
-) -> Result<Predicted, FillError> {
+) -> Result<Prediction, FillError> {
     settings.validate()?;
     let scaled;
     let exemplar = if settings.exemplar_scale == 1.0 {
@@ -229,11 +265,20 @@ fn predict_timed(
     // Only what lies within the coarsest neighbourhood of the bounds is context.
     let reach = bounds.inflate(settings.radius_mm() * 4.0);
     let near = |p: &CurvePath| Rect::from_points(p.points_mm.iter().copied()).is_some_and(|b| b.overlaps(&reach));
-    let drawn: Vec<CurvePath> = drawn.iter().filter(|p| near(p)).cloned().collect();
+    let drawn_shapes = &drawn.shapes;
+    let drawn: Vec<CurvePath> = drawn.paths.iter().filter(|p| near(p)).cloned().collect();
+    // Drawn shapes like an element of the exemplar are that element, in
+    // every neighbourhood; other shapes only keep new elements off them.
+    let drawn_elements: Vec<PlacedElement> = drawn_shapes
+        .iter()
+        .filter_map(|s| exemplar.elements.like(s))
+        .filter(|e| e.centre_mm.cmpge(reach.min).all() && e.centre_mm.cmple(reach.max).all())
+        .collect();
     let Synthesized { paths: mut synthesized, tangents, elements } = timings.time("synthesis", || {
-        synthesize_oriented(&exemplar.paths, &exemplar.elements, (&bounds, Some(region)), &drawn, settings, control)
+        let fixed = (&drawn[..], &drawn_elements[..]);
+        synthesize_oriented(&exemplar.paths, &exemplar.elements, (&bounds, Some(region)), fixed, settings, control)
     })?;
-    if synthesized.is_empty() && elements.is_empty() && drawn.is_empty() {
+    if synthesized.is_empty() && elements.is_empty() && drawn.is_empty() && drawn_elements.is_empty() {
         return Err(nothing_left(exemplar, &bounds, 1.0, settings));
     }
     // A new path that stops just short of a drawn stroke's end continues it.
@@ -251,21 +296,22 @@ fn predict_timed(
         Ok::<_, FillError>(smooth_paths_oriented(&limits.remove_from(synthesized, anchored), &tangents))
     })?;
     // Something was made, and all of it was loose.
-    if smooth.is_empty() && elements.is_empty() && drawn.is_empty() {
+    if smooth.is_empty() && elements.is_empty() && drawn.is_empty() && drawn_elements.is_empty() {
         return Err(nothing_left(exemplar, &bounds, 1.0, settings));
     }
     let paths = timings.time("clip", || clip_paths(&smooth, region, MIN_CLIPPED_SPACINGS * settings.delta_mm));
-    let elements = timings
-        .time("elements", || elements_within(&exemplar.elements.with_placed(elements), &exemplar.elements, region));
-    Ok(Predicted { paths, elements })
+    let elements = timings.time("elements", || {
+        elements_within(&exemplar.elements.with_placed(elements), &exemplar.elements, region, drawn_shapes)
+    });
+    Ok(Prediction { paths, elements })
 }
 
 /// The shapes of `elements` that lie wholly within `region`: an element
 /// is whole or absent, never cut by the region's edge. Where the
 /// exemplar's elements (`learned`) never overlap, an element overlapping
-/// one kept before it goes too: two berries grown into one blob are no
-/// element of the exemplar.
-fn elements_within(elements: &Elements, learned: &Elements, region: &Region) -> Vec<Polygon> {
+/// one kept before it, or a shape already `drawn`, goes too: two berries
+/// grown into one blob are no element of the exemplar.
+fn elements_within(elements: &Elements, learned: &Elements, region: &Region, drawn: &[Polygon]) -> Vec<Polygon> {
     let learned_apart = {
         let shapes = learned.polygons();
         !(0..shapes.len()).any(|a| (a + 1..shapes.len()).any(|b| overlapping(&shapes[a], &shapes[b])))
@@ -274,7 +320,7 @@ fn elements_within(elements: &Elements, learned: &Elements, region: &Region) -> 
     for shape in elements.polygons() {
         let alone = Region::new(vec![shape.clone()]);
         let inside = difference(&alone, region).area() <= ELEMENT_OUTSIDE_SHARE * shape.area();
-        if inside && !(learned_apart && kept.iter().any(|k| overlapping(k, &shape))) {
+        if inside && !(learned_apart && kept.iter().chain(drawn).any(|k| overlapping(k, &shape))) {
             kept.push(shape);
         }
     }

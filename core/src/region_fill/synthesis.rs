@@ -151,7 +151,7 @@ pub fn synthesize_around(
     settings: &Settings,
     control: &Control,
 ) -> Result<Vec<CurvePath>, FillError> {
-    Ok(synthesize_oriented(exemplar, &Elements::default(), (bounds, None), fixed, settings, control)?.paths)
+    Ok(synthesize_oriented(exemplar, &Elements::default(), (bounds, None), (fixed, &[]), settings, control)?.paths)
 }
 
 /// What the synthesis made: its paths, the orientations of the final
@@ -172,12 +172,14 @@ pub struct Synthesized {
 /// elements of its kind (sections 4.1 and 4.2.3). With a `region` (mm,
 /// within `bounds`), samples are kept within it grown by the finest
 /// neighbourhood's radius: a round or drawn region is not synthesized over
-/// its whole bounding box.
+/// its whole bounding box. Elements already drawn (`fixed_elements`, of
+/// the exemplar's kinds) are pinned as the drawn paths are, and are not
+/// among the elements returned.
 pub fn synthesize_oriented(
     exemplar: &[CurvePath],
     elements: &Elements,
     (bounds, region): (&Rect, Option<&Region>),
-    fixed: &[CurvePath],
+    (fixed, fixed_elements): (&[CurvePath], &[PlacedElement]),
     settings: &Settings,
     control: &Control,
 ) -> Result<Synthesized, FillError> {
@@ -191,6 +193,7 @@ pub fn synthesize_oriented(
         .iter()
         .map(|p| CurvePath { points_mm: p.points_mm.iter().map(|q| *q - offset).collect(), closed: p.closed })
         .collect();
+    let fixed_elements: Vec<(DVec2, u32)> = fixed_elements.iter().map(|e| (e.centre_mm - offset, e.kind)).collect();
     let element_spacing_mm = element_spacing_mm(elements, settings.radius_mm());
     let mut rng = SplitMix64::new(settings.seed);
     let mut paths: Option<Vec<CurvePath>> = None;
@@ -206,20 +209,29 @@ pub fn synthesize_oriented(
         }
         let (output, start, pinned) = match &paths {
             None => {
-                let pinned = SampleGraph::new(&fixed, delta)?;
+                let mut pinned = SampleGraph::new(&fixed, delta)?;
+                for &(centre, kind) in &fixed_elements {
+                    pinned.add_element(centre, kind);
+                }
                 let count = pinned.samples.len();
                 let (output, sources) = initialize(&input, pinned, (size, &mask), 2.0 * radius, delta, &mut rng);
                 (output, Some(sources), count)
             }
             Some(p) => {
                 let all: Vec<CurvePath> = p.iter().chain(&fixed).cloned().collect();
-                let graph = SampleGraph::new_without_corners(&all, delta)?;
-                let on_fixed = on_paths(&graph, &fixed, JOIN_TOLERANCE_MM);
-                let (mut graph, pinned) = graph.pinned_first(&on_fixed);
-                // Elements go on to the next level as they are: one sample at every level.
-                for &(centre, kind) in &carried {
+                let mut graph = SampleGraph::new_without_corners(&all, delta)?;
+                let mut on_fixed = on_paths(&graph, &fixed, JOIN_TOLERANCE_MM);
+                // Elements go on to the next level as they are: one sample
+                // at every level. The drawn ones are pinned.
+                for (&(centre, kind), drawn) in fixed_elements
+                    .iter()
+                    .zip(std::iter::repeat(true))
+                    .chain(carried.iter().zip(std::iter::repeat(false)))
+                {
                     graph.add_element(centre, kind);
+                    on_fixed.push(drawn);
                 }
+                let (graph, pinned) = graph.pinned_first(&on_fixed);
                 (graph, None, pinned)
             }
         };
@@ -247,7 +259,8 @@ pub fn synthesize_oriented(
         // paths (and their edges onto what was drawn) are carried.
         output.disconnect_among(pinned);
         paths = Some(output.to_paths());
-        carried = output.elements();
+        // The pinned samples come first, and stay: the drawn elements are among them.
+        carried = output.samples[pinned..].iter().filter_map(|s| s.element.map(|k| (s.position_mm, k))).collect();
         if level + 1 == LEVELS {
             tangents = EdgeTangents::of(&output, offset);
         }
