@@ -35,7 +35,7 @@ fn predictions_continue_what_was_drawn_without_crossing_it() {
     let settings = Settings::default();
     let window = Region::rectangle(&Rect::new(DVec2::ZERO, DVec2::splat(WINDOW_MM)));
     let above = Region::rectangle(&Rect::new(DVec2::new(0.0, STRIP_MM), DVec2::splat(WINDOW_MM)));
-    for name in ["crackle", "meander", "vine", "scales"] {
+    for name in ["crackle", "meander", "vine", "scales", "waves", "spirals"] {
         let exemplar = CurveExemplar::builtin(name).unwrap();
         let drawn = drawn_strip(&exemplar);
         let predicted =
@@ -97,7 +97,9 @@ fn drawn_berries(exemplar: &CurveExemplar, settings: &Settings) -> (Drawn, Vec<P
         .map(|s| s.map_points(|p| p - low))
         .filter(|s| s.outer.iter().all(|p| inside(*p)))
         .collect();
-    (Drawn { paths: drawn_strip(exemplar), shapes: shapes.clone() }, learned.elements.polygons())
+    // The stalks as learned: the exemplar's paths hold the berries' outlines too.
+    let paths = drawn_strip(&CurveExemplar::from_paths("stalks", learned.paths.clone()));
+    (Drawn { paths, shapes }, learned.elements.polygons())
 }
 
 /// The centre of a shape (the mean of its outer points), as
@@ -146,6 +148,11 @@ fn berries_drawn_stay_and_predicted_berries_go_on_beside_them() {
             "a suggested berry {gap:.1} mm from a drawn one; the exemplar's closest {closest:.1}"
         );
     }
+    // The stalks suggested cross neither each other nor what was drawn,
+    // as the exemplar's never do.
+    assert_eq!(curve_statistics(&as_pairs(&learned.paths)).crossings_per_100mm, 0.0);
+    let paths: Vec<CurvePath> = drawn.paths.iter().chain(&predicted.paths).cloned().collect();
+    assert_eq!(curve_statistics(&as_pairs(&paths)).crossings_per_100mm, 0.0, "suggested stalks cross");
     // The fill around them prints them too: each drawn berry's centre is in the solid.
     let product = make_product_around(&exemplar, &window, &drawn, &settings, &Control::default()).unwrap();
     for shape in &drawn.shapes {
