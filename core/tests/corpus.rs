@@ -86,3 +86,35 @@ fn corpus_subset_meets_its_plan_in_the_band() {
     println!("{answered} of {runs} answered, {} not as planned", inexact.len());
     assert!(inexact.is_empty(), "{} of {answered} differ from the plan: {inexact:#?}", inexact.len());
 }
+
+/// Region fills of corpus ornaments that once crossed themselves where
+/// their exemplar never does (`docs/region-fill.md`, *Crossings*): checked
+/// by the quality measure, not the code that cuts crossings.
+#[test]
+fn fills_of_corpus_ornaments_cross_only_where_their_exemplar_does() {
+    use tracery_core::geom::Rect;
+    use tracery_core::quality::curve_statistics;
+    use tracery_core::region_fill::{CurveExemplar, Settings as FillSettings, make_product, parse_region};
+    let files = corpus();
+    if files.is_empty() {
+        eprintln!("the corpus is not next to this checkout; nothing to fill");
+        return;
+    }
+    let region = parse_region("rect:60x40").unwrap();
+    for name in ["vectorian92", "vectorian100", "pgfhan52"] {
+        let file = files.iter().find(|f| f.file_stem().is_some_and(|s| s == name)).expect("in the corpus");
+        let exemplar = CurveExemplar::load(&file.to_string_lossy()).unwrap();
+        let bounds = Rect::from_points(exemplar.paths.iter().flat_map(|p| p.points_mm.iter().copied())).unwrap();
+        let mut settings = FillSettings::default();
+        // 40 mm across, as the sweep draws them.
+        settings.exemplar_scale = 40.0 / bounds.width().max(bounds.height());
+        let learned = exemplar.scaled(settings.exemplar_scale).curves(settings.delta_mm);
+        let pairs = |paths: &mut dyn Iterator<Item = (Vec<tracery_core::DVec2>, bool)>| paths.collect::<Vec<_>>();
+        let ex = curve_statistics(&pairs(&mut learned.paths.iter().map(|p| (p.points_mm.clone(), p.closed))));
+        assert_eq!(ex.crossings_per_100mm, 0.0, "{name}: the exemplar crosses itself");
+        let product = make_product(&exemplar, &region, &settings, &Control::default()).unwrap();
+        let out = curve_statistics(&pairs(&mut product.paths_mm.iter().map(|p| (p.points_mm.clone(), p.closed))));
+        assert_eq!(out.crossings_per_100mm, 0.0, "{name}: the fill crosses itself");
+        assert!(out.length_mm > 300.0, "{name}: only {:.0} mm of paths", out.length_mm);
+    }
+}

@@ -9,6 +9,7 @@
 mod assignment;
 mod builtin;
 mod corners;
+mod crossings;
 mod curve_path;
 mod element;
 mod error;
@@ -30,6 +31,7 @@ mod synthesis;
 pub use assignment::{MatchedPair, assign_edges, assign_positions, existence_votes};
 pub use builtin::{BUILTIN_CURVES, builtin_curves, builtin_shapes};
 pub use corners::corner_vertices;
+pub use crossings::{Crossing, crossings, cut_crossings};
 pub use curve_path::CurvePath;
 pub use element::{ELEMENT_MAX_SPACINGS, Elements, PlacedElement, SAME_KIND_SHARE, centroid, is_element_sized};
 pub use error::FillError;

@@ -16,7 +16,8 @@ use glam::DVec2;
 use super::fragments::{degrees, key};
 use super::{
     CurveExemplar, CurvePath, Elements, FillError, FragmentLimits, JOIN_TOLERANCE_MM, PlacedElement, SampleGraph,
-    Settings, Synthesized, check_region, join_drawn_ends, smooth_paths_oriented, synthesize_oriented,
+    Settings, Synthesized, check_region, crossings, cut_crossings, join_drawn_ends, smooth_paths_oriented,
+    synthesize_oriented,
 };
 
 /// Paths left shorter than this many sample spacings by clipping are
@@ -299,7 +300,15 @@ fn predict_timed(
     if smooth.is_empty() && elements.is_empty() && drawn.is_empty() && drawn_elements.is_empty() {
         return Err(nothing_left(exemplar, &bounds, 1.0, settings));
     }
-    let paths = timings.time("clip", || clip_paths(&smooth, region, MIN_CLIPPED_SPACINGS * settings.delta_mm));
+    let min_mm = MIN_CLIPPED_SPACINGS * settings.delta_mm;
+    let paths = timings.time("clip", || clip_paths(&smooth, region, min_mm));
+    // Where the exemplar's paths never pass through each other, the new
+    // ones do not either, nor through what was drawn.
+    let paths = if crossings(&exemplar.paths).is_empty() {
+        timings.time("crossings", || cut_crossings(paths, &drawn, settings.delta_mm, min_mm))
+    } else {
+        paths
+    };
     let elements = timings.time("elements", || {
         elements_within(&exemplar.elements.with_placed(elements), &exemplar.elements, region, drawn_shapes)
     });
