@@ -61,6 +61,16 @@ fn choose_region_fill(harness: &mut App) {
     assert!(matches!(harness.state().settings(), ModeSettings::RegionFill(_)));
 }
 
+/// Chooses *Region fill* with the berries for what is drawn next.
+fn choose_berries(harness: &mut App) {
+    choose_region_fill(harness);
+    // The thumbnail and the name under it both read "berries": the name.
+    harness.query_all_by_label("berries").last().expect("the berries' name").scroll_to_me();
+    harness.run_steps(3);
+    harness.query_all_by_label("berries").last().expect("the berries' name").click();
+    harness.step();
+}
+
 /// Draws a region fill's outline and waits for it; returns the fill's id.
 fn draw_fill(harness: &mut App) -> u64 {
     choose_region_fill(harness);
@@ -263,12 +273,7 @@ fn a_curve_exemplar_imported_in_region_fill_is_what_the_fill_is_made_of() {
 fn berries_chosen_in_the_app_fill_with_whole_elements_inside_the_outline() {
     let mut harness = harness(Vec::new());
     harness.step();
-    choose_region_fill(&mut harness);
-    // The thumbnail and the name under it both read "berries": the name.
-    harness.query_all_by_label("berries").last().expect("the berries' name").scroll_to_me();
-    harness.run_steps(3);
-    harness.query_all_by_label("berries").last().expect("the berries' name").click();
-    harness.step();
+    choose_berries(&mut harness);
     let ModeSettings::RegionFill(item) = harness.state().settings() else { panic!("the controls left region fill") };
     assert_eq!(item.exemplar.name(), "berries");
     let id = draw_outline(&mut harness);
@@ -307,11 +312,7 @@ fn overlap(a: &[DVec2], b: &[DVec2]) -> bool {
 fn berries_suggested_are_accepted_as_filled_shapes_that_print_and_clone() {
     let mut harness = harness(Vec::new());
     harness.step();
-    choose_region_fill(&mut harness);
-    harness.query_all_by_label("berries").last().expect("the berries' name").scroll_to_me();
-    harness.run_steps(3);
-    harness.query_all_by_label("berries").last().expect("the berries' name").click();
-    harness.step();
+    choose_berries(&mut harness);
     let fill = draw_outline(&mut harness);
     click_in_side_panel(&mut harness, "Fill automatically");
     click_in_side_panel(&mut harness, "Pen");
