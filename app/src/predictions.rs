@@ -223,9 +223,7 @@ impl TraceryApp {
         let distance = |k: usize| match suggestion(&prediction, k) {
             Some(Suggestion::Path(path)) => path.distance_to(p),
             Some(Suggestion::Element(shape)) if shape.contains(p) => 0.0,
-            Some(Suggestion::Element(shape)) => {
-                shape.rings().map(|r| tracery_core::geom::polyline_distance(r, true, p)).fold(f64::MAX, f64::min)
-            }
+            Some(Suggestion::Element(shape)) => shape.outline_distance(p),
             None => f64::MAX,
         };
         let nearest = (0..suggestions(&prediction))

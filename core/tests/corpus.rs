@@ -109,11 +109,11 @@ fn fills_of_corpus_ornaments_cross_only_where_their_exemplar_does() {
         // 40 mm across, as the sweep draws them.
         settings.exemplar_scale = 40.0 / bounds.width().max(bounds.height());
         let learned = exemplar.scaled(settings.exemplar_scale).curves(settings.delta_mm);
-        let pairs = |paths: &mut dyn Iterator<Item = (Vec<tracery_core::DVec2>, bool)>| paths.collect::<Vec<_>>();
-        let ex = curve_statistics(&pairs(&mut learned.paths.iter().map(|p| (p.points_mm.clone(), p.closed))));
-        assert_eq!(ex.crossings_per_100mm, 0.0, "{name}: the exemplar crosses itself");
+        let ex_paths: Vec<_> = learned.paths.iter().map(|p| (p.points_mm.clone(), p.closed)).collect();
+        assert_eq!(curve_statistics(&ex_paths).crossings_per_100mm, 0.0, "{name}: the exemplar crosses itself");
         let product = make_product(&exemplar, &region, &settings, &Control::default()).unwrap();
-        let out = curve_statistics(&pairs(&mut product.paths_mm.iter().map(|p| (p.points_mm.clone(), p.closed))));
+        let paths: Vec<_> = product.paths_mm.iter().map(|p| (p.points_mm.clone(), p.closed)).collect();
+        let out = curve_statistics(&paths);
         assert_eq!(out.crossings_per_100mm, 0.0, "{name}: the fill crosses itself");
         assert!(out.length_mm > 300.0, "{name}: only {:.0} mm of paths", out.length_mm);
     }

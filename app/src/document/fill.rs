@@ -60,16 +60,14 @@ pub struct PenItem {
 }
 
 impl PenItem {
-    /// Whether a stroke with this pen along a curve that is `closed` is a filled shape.
-    pub fn fills(&self, closed: bool) -> bool {
-        self.filled && closed
-    }
-}
-
-impl PenItem {
     /// A pen drawing like the strokes of a fill with `settings`.
     pub fn for_fill(settings: &region_fill::Settings) -> PenItem {
         PenItem { width_mm: settings.stroke_width_mm, thickness_mm: settings.thickness_mm, filled: false }
+    }
+
+    /// Whether a stroke with this pen along a curve that is `closed` is a filled shape.
+    pub fn fills(&self, closed: bool) -> bool {
+        self.filled && closed
     }
 }
 

@@ -96,6 +96,20 @@ impl Polygon {
         std::iter::once(&self.outer).chain(self.holes.iter())
     }
 
+    /// Distance from `p` to the nearest of the polygon's rings (inside or
+    /// out); infinite for a polygon with no points.
+    ///
+    /// ```
+    /// use glam::DVec2;
+    /// use tracery_core::geom::Polygon;
+    /// let square = Polygon { outer: vec![DVec2::ZERO, DVec2::X * 4.0, DVec2::splat(4.0), DVec2::Y * 4.0], holes: vec![] };
+    /// assert_eq!(square.outline_distance(DVec2::new(1.0, 2.0)), 1.0);
+    /// assert_eq!(square.outline_distance(DVec2::new(7.0, 2.0)), 3.0);
+    /// ```
+    pub fn outline_distance(&self, p: DVec2) -> f64 {
+        self.rings().map(|ring| super::polyline_distance(ring, true, p)).fold(f64::INFINITY, f64::min)
+    }
+
     /// Applies `f` to every point.
     pub fn map_points(&self, mut f: impl FnMut(DVec2) -> DVec2) -> Polygon {
         Polygon {

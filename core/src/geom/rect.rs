@@ -71,6 +71,18 @@ impl Rect {
         self.max.cmpge(other.min).all() && other.max.cmpge(self.min).all()
     }
 
+    /// Whether `p` lies in the rectangle (its edges count).
+    ///
+    /// ```
+    /// use glam::DVec2;
+    /// use tracery_core::geom::Rect;
+    /// let unit = Rect::new(DVec2::ZERO, DVec2::ONE);
+    /// assert!(unit.contains(DVec2::ONE) && !unit.contains(DVec2::new(0.5, 1.5)));
+    /// ```
+    pub fn contains(&self, p: DVec2) -> bool {
+        p.cmpge(self.min).all() && p.cmple(self.max).all()
+    }
+
     /// The rectangle grown by `margin` on every side.
     pub fn inflate(&self, margin: f64) -> Rect {
         Rect { min: self.min - DVec2::splat(margin), max: self.max + DVec2::splat(margin) }

@@ -47,9 +47,8 @@ pub fn element_statistics(
 ) -> ElementStatistics {
     let window = bounds.inflate(-margin_mm);
     let centre = |p: &Polygon| p.outer.iter().copied().sum::<DVec2>() / p.outer.len().max(1) as f64;
-    let inside = |p: DVec2| p.cmpge(window.min).all() && p.cmple(window.max).all();
     let boxes: Vec<Option<Rect>> = elements.iter().map(|e| Rect::from_points(e.outer.iter().copied())).collect();
-    let in_window: Vec<bool> = elements.iter().map(|e| inside(centre(e))).collect();
+    let in_window: Vec<bool> = elements.iter().map(|e| window.contains(centre(e))).collect();
     let counted: Vec<usize> = (0..elements.len()).filter(|&k| in_window[k]).collect();
     let mut overlapping_pairs = 0;
     for a in 0..elements.len() {

@@ -99,12 +99,12 @@ pub fn cut_crossings(mut paths: Vec<CurvePath>, fixed: &[CurvePath], gap_mm: f64
         // One cut per path a round: the indices of the others stay true.
         let mut cut_at: Vec<Option<(usize, DVec2)>> = vec![None; paths.len()];
         for c in &found {
-            let (cut, _) = match (is_fixed(c.a.0), is_fixed(c.b.0)) {
+            let cut = match (is_fixed(c.a.0), is_fixed(c.b.0)) {
                 (true, true) => continue,
-                (true, false) => (c.b, c.a),
-                (false, true) => (c.a, c.b),
-                _ if lengths[c.a.0] <= lengths[c.b.0] => (c.a, c.b),
-                _ => (c.b, c.a),
+                (true, false) => c.b,
+                (false, true) => c.a,
+                _ if lengths[c.a.0] <= lengths[c.b.0] => c.a,
+                _ => c.b,
             };
             cut_at[cut.0].get_or_insert((cut.1, c.at_mm));
         }

@@ -6,7 +6,7 @@
 
 use glam::DVec2;
 
-use crate::geom::{Polygon, Rect, polyline_distance};
+use crate::geom::{Polygon, Rect};
 
 /// A filled shape is a discrete element when its bounding box's diagonal
 /// is at most this many sample spacings: about the width of a
@@ -66,7 +66,7 @@ impl Elements {
     pub fn add(&mut self, polygon: &Polygon) {
         let centre_mm = centroid(polygon);
         let shape = polygon.map_points(|p| p - centre_mm);
-        let kind = match self.kinds.iter().position(|k| same_shape(k, &shape, SAME_KIND_SHARE)) {
+        let kind = match self.kinds.iter().position(|k| unlikeness(k, &shape, SAME_KIND_SHARE).is_some()) {
             Some(k) => k,
             None => {
                 self.kinds.push(shape);
@@ -98,12 +98,8 @@ impl Elements {
     pub fn like(&self, polygon: &Polygon) -> Option<PlacedElement> {
         let centre_mm = centroid(polygon);
         let shape = polygon.map_points(|p| p - centre_mm);
-        let unlikeness = |k: &Polygon| {
-            let diagonal = size(k).length().max(size(&shape).length());
-            (same_shape(k, &shape, DRAWN_KIND_SHARE)).then(|| farthest(k, &shape).max(farthest(&shape, k)) / diagonal)
-        };
         let (kind, _) = (self.kinds.iter().enumerate())
-            .filter_map(|(k, kind)| Some((k, unlikeness(kind)?)))
+            .filter_map(|(k, kind)| Some((k, unlikeness(kind, &shape, DRAWN_KIND_SHARE)?)))
             .min_by(|a, b| a.1.total_cmp(&b.1))?;
         Some(PlacedElement { kind: kind as u32, centre_mm })
     }
@@ -172,15 +168,13 @@ fn size(p: &Polygon) -> DVec2 {
 
 /// How far the point of `from`'s outlines farthest from `to`'s lies from them.
 fn farthest(from: &Polygon, to: &Polygon) -> f64 {
-    from.rings()
-        .flatten()
-        .map(|&p| to.rings().map(|ring| polyline_distance(ring, true, p)).fold(f64::INFINITY, f64::min))
-        .fold(0.0, f64::max)
+    from.rings().flatten().map(|&p| to.outline_distance(p)).fold(0.0, f64::max)
 }
 
-/// Whether two shapes, each about its centroid, are alike within `share`
-/// of the larger's diagonal.
-fn same_shape(a: &Polygon, b: &Polygon, share: f64) -> bool {
+/// How unlike two shapes, each about its centroid, are: the farthest a
+/// point of either's outlines lies from the other's, as a share of the
+/// larger's diagonal; `None` when that is over `share`.
+fn unlikeness(a: &Polygon, b: &Polygon, share: f64) -> Option<f64> {
     let (size_a, size_b) = (size(a), size(b));
     let diagonal = size_a.length().max(size_b.length());
     let tolerance = share * diagonal;
@@ -189,10 +183,8 @@ fn same_shape(a: &Polygon, b: &Polygon, share: f64) -> bool {
         || (size_a - size_b).abs().max_element() > 2.0 * tolerance
         || (a.area() - b.area()).abs() > 2.0 * tolerance * diagonal
     {
-        return false;
+        return None;
     }
-    let near = |from: &Polygon, to: &Polygon| {
-        from.rings().flatten().all(|&p| to.rings().any(|ring| polyline_distance(ring, true, p) <= tolerance))
-    };
-    near(a, b) && near(b, a)
+    let apart = farthest(a, b).max(farthest(b, a));
+    (apart <= tolerance).then(|| apart / diagonal)
 }

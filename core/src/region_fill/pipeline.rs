@@ -270,11 +270,8 @@ fn predict_timed(
     let drawn: Vec<CurvePath> = drawn.paths.iter().filter(|p| near(p)).cloned().collect();
     // Drawn shapes like an element of the exemplar are that element, in
     // every neighbourhood; other shapes only keep new elements off them.
-    let drawn_elements: Vec<PlacedElement> = drawn_shapes
-        .iter()
-        .filter_map(|s| exemplar.elements.like(s))
-        .filter(|e| e.centre_mm.cmpge(reach.min).all() && e.centre_mm.cmple(reach.max).all())
-        .collect();
+    let drawn_elements: Vec<PlacedElement> =
+        drawn_shapes.iter().filter_map(|s| exemplar.elements.like(s)).filter(|e| reach.contains(e.centre_mm)).collect();
     let Synthesized { paths: mut synthesized, tangents, elements } = timings.time("synthesis", || {
         let fixed = (&drawn[..], &drawn_elements[..]);
         synthesize_oriented(&exemplar.paths, &exemplar.elements, (&bounds, Some(region)), fixed, settings, control)

@@ -223,13 +223,11 @@ pub fn synthesize_oriented(
                 let mut on_fixed = on_paths(&graph, &fixed, JOIN_TOLERANCE_MM);
                 // Elements go on to the next level as they are: one sample
                 // at every level. The drawn ones are pinned.
-                for (&(centre, kind), drawn) in fixed_elements
-                    .iter()
-                    .zip(std::iter::repeat(true))
-                    .chain(carried.iter().zip(std::iter::repeat(false)))
-                {
-                    graph.add_element(centre, kind);
-                    on_fixed.push(drawn);
+                for (elements, drawn) in [(&fixed_elements, true), (&carried, false)] {
+                    for &(centre, kind) in elements {
+                        graph.add_element(centre, kind);
+                        on_fixed.push(drawn);
+                    }
                 }
                 let (graph, pinned) = graph.pinned_first(&on_fixed);
                 (graph, None, pinned)
@@ -284,9 +282,10 @@ fn on_paths(graph: &SampleGraph, paths: &[CurvePath], tolerance_mm: f64) -> Vec<
         .iter()
         .map(|s| {
             let p = s.position_mm;
-            paths.iter().zip(&boxes).any(|(path, b)| {
-                b.is_some_and(|b| p.cmpge(b.min).all() && p.cmple(b.max).all()) && path.distance_to(p) <= tolerance_mm
-            })
+            paths
+                .iter()
+                .zip(&boxes)
+                .any(|(path, b)| b.is_some_and(|b| b.contains(p)) && path.distance_to(p) <= tolerance_mm)
         })
         .collect()
 }
