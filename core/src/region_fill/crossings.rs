@@ -73,7 +73,8 @@ fn proper_crossing(a: DVec2, b: DVec2, c: DVec2, d: DVec2) -> Option<DVec2> {
 /// `paths` with every crossing cut: at each, the shorter path (a path that
 /// crosses one of `fixed`, which are never cut, is the one cut) is broken,
 /// and its two new ends drawn back `gap_mm` along it from the crossing.
-/// Pieces shorter than `min_mm` go.
+/// Pieces shorter than `min_mm` go. Also how many cuts were made: the
+/// synthesis's own count of crossings it could not avoid.
 ///
 /// ```
 /// use tracery_core::DVec2;
@@ -81,13 +82,20 @@ fn proper_crossing(a: DVec2, b: DVec2, c: DVec2, d: DVec2) -> Option<DVec2> {
 /// let line = |a: DVec2, b: DVec2| CurvePath { points_mm: vec![a, b], closed: false };
 /// let long = line(DVec2::new(-10.0, 0.0), DVec2::new(10.0, 0.0));
 /// let short = line(DVec2::new(0.0, -4.0), DVec2::new(0.0, 4.0));
-/// let cut = cut_crossings(vec![long.clone(), short], &[], 1.0, 0.5);
+/// let (cut, cuts) = cut_crossings(vec![long.clone(), short], &[], 1.0, 0.5);
+/// assert_eq!(cuts, 1);
 /// assert!(crossings(&cut).is_empty());
 /// assert_eq!(cut[0], long, "the longer path stays whole");
 /// assert_eq!(cut[1].points_mm, vec![DVec2::new(0.0, -4.0), DVec2::new(0.0, -1.0)]);
 /// assert_eq!(cut[2].points_mm, vec![DVec2::new(0.0, 1.0), DVec2::new(0.0, 4.0)]);
 /// ```
-pub fn cut_crossings(mut paths: Vec<CurvePath>, fixed: &[CurvePath], gap_mm: f64, min_mm: f64) -> Vec<CurvePath> {
+pub fn cut_crossings(
+    mut paths: Vec<CurvePath>,
+    fixed: &[CurvePath],
+    gap_mm: f64,
+    min_mm: f64,
+) -> (Vec<CurvePath>, usize) {
+    let mut cuts = 0;
     for _ in 0..MAX_ROUNDS {
         let all: Vec<CurvePath> = paths.iter().chain(fixed).cloned().collect();
         let found = crossings(&all);
@@ -108,6 +116,7 @@ pub fn cut_crossings(mut paths: Vec<CurvePath>, fixed: &[CurvePath], gap_mm: f64
             };
             cut_at[cut.0].get_or_insert((cut.1, c.at_mm));
         }
+        cuts += cut_at.iter().flatten().count();
         let mut next = Vec::with_capacity(paths.len() + found.len());
         for (path, cut) in paths.into_iter().zip(cut_at) {
             match cut {
@@ -117,7 +126,7 @@ pub fn cut_crossings(mut paths: Vec<CurvePath>, fixed: &[CurvePath], gap_mm: f64
         }
         paths = next.into_iter().filter(|p| p.points_mm.len() >= 2 && p.length_mm() >= min_mm).collect();
     }
-    paths
+    (paths, cuts)
 }
 
 /// `path` broken at `at` on its segment `segment`, each side drawn back

@@ -88,6 +88,9 @@ pub struct Prediction {
     /// The shapes of the elements lying wholly within the region, none
     /// overlapping a drawn shape, mm.
     pub elements: Vec<Polygon>,
+    /// Crossings the synthesis made where the exemplar has none, cut
+    /// after reconstruction ([`cut_crossings`]).
+    pub crossings_cut: usize,
 }
 
 impl Prediction {
@@ -175,7 +178,7 @@ fn finish(
     control: &Control,
     mut timings: Timings,
 ) -> Result<Product, FillError> {
-    let Prediction { paths, elements } = predicted;
+    let Prediction { paths, elements, crossings_cut } = predicted;
     let printed: Vec<CurvePath> = paths.iter().chain(&clip_paths(&drawn.paths, region, 0.0)).cloned().collect();
     let shapes: Vec<Polygon> = elements.iter().chain(&drawn.shapes).cloned().collect();
     let (print, bridges) = timings.time("strokes", || print_region(&printed, &shapes, region, settings));
@@ -190,6 +193,7 @@ fn finish(
     facts.push("length_mm", Fact::Number(paths.iter().map(CurvePath::length_mm).sum()));
     facts.push("region_area_mm2", Fact::Number(region.area()));
     facts.push("coverage", Fact::Number(print.area() / region.area()));
+    facts.push("crossings_cut", Fact::Count(crossings_cut));
     if settings.one_piece {
         facts.push("bridges", Fact::Count(bridges));
         facts.push("one_piece", Fact::Text(if topology.components == 1 { "joined" } else { "not joined" }.into()));
@@ -301,15 +305,15 @@ fn predict_timed(
     let paths = timings.time("clip", || clip_paths(&smooth, region, min_mm));
     // Where the exemplar's paths never pass through each other, the new
     // ones do not either, nor through what was drawn.
-    let paths = if crossings(&exemplar.paths).is_empty() {
+    let (paths, crossings_cut) = if crossings(&exemplar.paths).is_empty() {
         timings.time("crossings", || cut_crossings(paths, &drawn, settings.delta_mm, min_mm))
     } else {
-        paths
+        (paths, 0)
     };
     let elements = timings.time("elements", || {
         elements_within(&exemplar.elements.with_placed(elements), &exemplar.elements, region, drawn_shapes)
     });
-    Ok(Prediction { paths, elements })
+    Ok(Prediction { paths, elements, crossings_cut })
 }
 
 /// The shapes of `elements` that lie wholly within `region`: an element
