@@ -20,7 +20,7 @@ use glam::{DVec2, DVec3};
 use super::faces::{ElementFaces, Faces};
 use super::matching::{Input, MARGIN_CELLS, Neighbourhood, best_translation, reach_mm, thin};
 use super::merge::merge_patch;
-use super::patch::{FaceGraph, Patch, triangle_area_3d};
+use super::patch::{FIELD_MAX_DISTORTION, FIELD_WEIGHT, FaceGraph, LIGHT_FIELD_WEIGHT, Patch, triangle_area_3d};
 use super::shell::{Shell, ShellStretch};
 use super::zones::{Zone, Zones, boxes_overlap};
 use super::{Element, GuidanceField, MAX_QUILT_TRIANGLES, Quilt, QuiltError, Settings, Swatch};
@@ -164,8 +164,7 @@ pub fn quilt_surface(
     let sink_mm = settings.sink_mm;
     while let Some(seed) = most_constrained(&graph, &processed) {
         control.check()?;
-        let Some(patch) = grow_patch(surface, &graph, seed, field.direction(seed), radius_mm, seed_uv, &mut report)
-        else {
+        let Some(patch) = grow_patch(surface, &graph, seed, field, radius_mm, seed_uv, &mut report) else {
             processed[seed as usize] = true;
             report.bare_seeds += 1;
             continue;
@@ -278,7 +277,7 @@ fn grow_patch(
     surface: &SurfaceMesh,
     graph: &FaceGraph,
     seed: u32,
-    direction: DVec3,
+    field: &GuidanceField,
     radius_mm: f64,
     seed_uv: DVec2,
     report: &mut ShellReport,
@@ -286,7 +285,14 @@ fn grow_patch(
     let mut radius = radius_mm;
     for _ in 0..PATCH_TRIES {
         let faces: Vec<u32> = graph.within(&[seed], radius).into_iter().map(|(f, _)| f).collect();
-        if let Ok(patch) = Patch::lay_flat(surface, faces, seed, direction, seed_uv) {
+        // The size is the largest that lays flat keeping angles first (see
+        // `LIGHT_FIELD_WEIGHT`); at that size, rows along the field where
+        // that keeps area within its tighter limit. One solve per size
+        // tried, and one more: the sizes the field's rows would allow are
+        // never larger.
+        if let Ok(conformal) = Patch::lay_flat(surface, faces.clone(), seed, (field, LIGHT_FIELD_WEIGHT), seed_uv) {
+            let along = Patch::lay_flat(surface, faces, seed, (field, FIELD_WEIGHT), seed_uv);
+            let patch = along.ok().filter(|p| p.distortion <= FIELD_MAX_DISTORTION).unwrap_or(conformal);
             report.max_patch_distortion = report.max_patch_distortion.max(patch.distortion);
             return Some(patch);
         }

@@ -1,10 +1,21 @@
 //! A patch of a curved base laid flat (the paper's section 3.1): base
 //! faces within a geodesic radius of a seed face, flattened by least
-//! squares conformal maps (LSCM, a sparse solve through faer), scaled to
-//! keep their area, and turned so the guidance field at the seed points
-//! along `u`. A patch whose area is distorted by more than
-//! [`MAX_AREA_DISTORTION`] somewhere, or that is not a disk, is refused, and
-//! the caller grows a smaller one.
+//! squares conformal maps (LSCM, a sparse solve through faer) whose rows
+//! follow the guidance field, scaled to keep their area, and turned so the
+//! field at the seed points along `u`. A patch whose area is distorted by
+//! more than [`MAX_AREA_DISTORTION`] somewhere, or that is not a disk, is
+//! refused, and the caller grows a smaller one.
+//!
+//! Why the rows follow the field: the paper lays each patch flat by a
+//! conformal map alone and turns it to the field at the seed, so the
+//! swatch's straight rows become geodesics. Where the field's lines are
+//! not geodesics (the parallels round a vase's belly or shoulder), a row
+//! leaves its line by about `κ_g L² / 2` at a distance `L` from the seed:
+//! some 5 mm across a 20 mm weave patch at 45° on a 40 mm sphere, more than
+//! the weave's spacing. Neighbouring patches' threads then meet at a slant,
+//! fail to stitch and are left out. With the field's lines held to
+//! constant `v`, a surface of revolution turned about its axis unrolls as
+//! Mercator's map (conformal, parallels straight), and rows run round it.
 
 use std::cmp::Reverse;
 use std::collections::BinaryHeap;
@@ -16,12 +27,39 @@ use faer::prelude::Solve;
 use faer::sparse::{SparseColMat, Triplet};
 use glam::{DVec2, DVec3};
 
+use super::GuidanceField;
 use crate::geom::TriangleGrid;
 use crate::surface::SurfaceMesh;
 
 /// The most a patch's triangles may grow or shrink in area when laid flat
 /// (the paper's factor of 4).
 pub const MAX_AREA_DISTORTION: f64 = 4.0;
+
+/// How much following the field weighs against keeping angles: the
+/// residuals have the same units (a share of a triangle's size), so at 1 a
+/// turn of the rows off the field costs about what as large a shear does.
+/// Where the field can be followed conformally (round a surface of
+/// revolution) both vanish together.
+pub const FIELD_WEIGHT: f64 = 1.0;
+
+/// Where following the field distorts area past [`FIELD_MAX_DISTORTION`]
+/// (round the pole of a field turning about it, as on a vase's flat top,
+/// Mercator's map grows without bound), the patch is laid flat nearly
+/// conformally: the field at this weight only sets the turn.
+pub const LIGHT_FIELD_WEIGHT: f64 = 1e-2;
+
+/// The most a patch laid flat along the field may grow or shrink a
+/// triangle's area, tighter than [`MAX_AREA_DISTORTION`]: Mercator's map
+/// keeps angles but not size, and rivets or scales placed through it
+/// would come out up to twice as wide as their neighbours, overlapping
+/// them. Past this, angles and size come first.
+pub const FIELD_MAX_DISTORTION: f64 = 2.0;
+
+/// What sets the flat patch's size, lightly: `u` growing at unit rate along
+/// the field. Conformal maps and the field's lines are alike at any
+/// size, so without it the solve would shrink the patch to a point; the
+/// size is set again afterwards from the areas.
+const SIZE_WEIGHT: f64 = 1e-3;
 
 /// The base's faces and which faces share an edge, for growing patches.
 pub(super) struct FaceGraph {
@@ -101,13 +139,14 @@ pub(super) struct Patch {
 
 impl Patch {
     /// Lays `faces` of `surface` (nearest the seed first) flat, with
-    /// `seed`'s centroid at `seed_uv` and `direction` (a tangent at the
-    /// seed) along `+u`.
+    /// `seed`'s centroid at `seed_uv`, the lines of `field` (a tangent per
+    /// base face) held to constant `v` as far as angles allow at
+    /// `field_weight` ([`FIELD_WEIGHT`]), and the field at the seed along `+u`.
     pub fn lay_flat(
         surface: &SurfaceMesh,
         faces: Vec<u32>,
         seed: u32,
-        direction: DVec3,
+        (field, field_weight): (&GuidanceField, f64),
         seed_uv: DVec2,
     ) -> Result<Patch, Unflat> {
         let mut vertex_of: Vec<u32> = Vec::new();
@@ -134,7 +173,9 @@ impl Patch {
             return Err(Unflat::NotDisk);
         }
         let seed_local = faces.iter().position(|&f| f == seed).ok_or(Unflat::NotDisk)?;
-        let mut uv = lscm(&positions, &triangles, triangles[seed_local][0]).ok_or(Unflat::Solve)?;
+        let directions: Vec<DVec3> = faces.iter().map(|&f| field.direction(f)).collect();
+        let mut uv = lscm_along(&positions, &triangles, (&directions, field_weight), triangles[seed_local][0])
+            .ok_or(Unflat::Solve)?;
         // LSCM keeps angles, not size: scale so the flat area is the base's.
         let area_3d: Vec<f64> = triangles.iter().map(|t| triangle_area_3d(t.map(|v| positions[v as usize]))).collect();
         let area_uv = |uv: &[DVec2], t: &[u32; 3]| {
@@ -170,7 +211,7 @@ impl Patch {
         // Turn and move: the field at the seed along +u, the seed where asked.
         let seed_t = triangles[seed_local];
         let jacobian = Jacobian::of(seed_t.map(|v| positions[v as usize]), seed_t.map(|v| uv[v as usize]));
-        let along = jacobian.to_flat(direction);
+        let along = jacobian.to_flat(directions[seed_local]);
         let angle = if along.length_squared() > 1e-18 { along.y.atan2(along.x) } else { 0.0 };
         let turn = DVec2::from_angle(-angle);
         let centre: DVec2 = seed_t.iter().map(|&v| turn.rotate(uv[v as usize])).sum::<DVec2>() / 3.0;
@@ -243,35 +284,58 @@ impl Jacobian {
     }
 }
 
-/// Least squares conformal map (Lévy et al. 2002) of a disk-like mesh:
-/// `pin` at the origin and the vertex farthest from it on the `u` axis at
-/// their distance in space; `None` if the solve fails.
-fn lscm(positions: &[DVec3], triangles: &[[u32; 3]], pin: u32) -> Option<Vec<DVec2>> {
+/// Least squares conformal map (Lévy et al. 2002) of a disk-like mesh,
+/// with the lines of `directions` (a tangent per triangle) held to
+/// constant `v` at `field_weight` ([`FIELD_WEIGHT`]) and `u` growing about one unit per mm
+/// along them ([`SIZE_WEIGHT`]); `pin` at the origin. `None` if the solve
+/// fails.
+///
+/// Each triangle adds, in its own flat frame, with `∇φ_m` the gradient of
+/// its corner `m`'s hat function: the conformal rows `Σ W_m (u_m + i v_m)`,
+/// zero for a similarity; `Σ v_m ∇φ_m · f`, the change of `v` along the
+/// field `f`; and `Σ u_m ∇φ_m · f − 1`. Each is scaled by the square root
+/// of the triangle's area, so that the sums are integrals.
+fn lscm_along(
+    positions: &[DVec3],
+    triangles: &[[u32; 3]],
+    (directions, field_weight): (&[DVec3], f64),
+    pin: u32,
+) -> Option<Vec<DVec2>> {
     let n = positions.len();
-    let far = (0..n as u32).max_by(|&a, &b| {
-        let p = positions[pin as usize];
-        positions[a as usize].distance_squared(p).total_cmp(&positions[b as usize].distance_squared(p))
-    })?;
-    if far == pin {
-        return None;
-    }
-    let mut pinned: Vec<Option<DVec2>> = vec![None; n];
-    pinned[pin as usize] = Some(DVec2::ZERO);
-    pinned[far as usize] = Some(DVec2::new(positions[pin as usize].distance(positions[far as usize]), 0.0));
-    // Unknowns: u then v of each free vertex.
+    // Unknowns: u then v of each vertex but the pin.
     let mut column = vec![usize::MAX; n];
     let mut free = 0;
-    for v in 0..n {
-        if pinned[v].is_none() {
-            column[v] = free;
+    for (v, c) in column.iter_mut().enumerate() {
+        if v != pin as usize {
+            *c = free;
             free += 1;
         }
     }
+    if free == 0 {
+        return None;
+    }
     let unknowns = 2 * free;
     let mut normal: FxHashMap<(usize, usize), f64> =
-        FxHashMap::with_capacity_and_hasher(triangles.len() * 24, Default::default());
+        FxHashMap::with_capacity_and_hasher(triangles.len() * 40, Default::default());
     let mut rhs = Mat::<f64>::zeros(unknowns, 1);
-    for t in triangles {
+    let mut add_row = |coefficients: [(f64, f64); 3], t: &[u32; 3], constant: f64| {
+        let mut entries: Vec<(usize, f64)> = Vec::with_capacity(6);
+        for (m, &(cu, cv)) in coefficients.iter().enumerate() {
+            let v = t[m] as usize;
+            // The pin sits at the origin: its terms vanish.
+            if v != pin as usize {
+                entries.push((column[v], cu));
+                entries.push((free + column[v], cv));
+            }
+        }
+        for &(i, wi) in &entries {
+            for &(j, wj) in &entries {
+                *normal.entry((i, j)).or_default() += wi * wj;
+            }
+            rhs[(i, 0)] -= wi * constant;
+        }
+    };
+    for (t, &direction) in triangles.iter().zip(directions) {
         let p = t.map(|v| positions[v as usize]);
         let x_axis = (p[1] - p[0]).normalize_or_zero();
         let normal_dir = (p[1] - p[0]).cross(p[2] - p[0]);
@@ -284,41 +348,37 @@ fn lscm(positions: &[DVec3], triangles: &[[u32; 3]], pin: u32) -> Option<Vec<DVe
         let w = 1.0 / area2.sqrt();
         // W_m: the edge opposite corner m, as a complex number; the
         // residual Σ W_m (u_m + i v_m) vanishes for a similarity.
-        let coefficients: [DVec2; 3] = std::array::from_fn(|m| (q[(m + 2) % 3] - q[(m + 1) % 3]) * w);
+        let edges: [DVec2; 3] = std::array::from_fn(|m| q[(m + 2) % 3] - q[(m + 1) % 3]);
+        let c: [DVec2; 3] = edges.map(|e| e * w);
         // Real row: Σ a u − b v; imaginary row: Σ b u + a v.
-        for row in 0..2 {
-            let mut entries: Vec<(usize, f64)> = Vec::with_capacity(6);
-            let mut constant = 0.0;
-            for m in 0..3 {
-                let (a, b) = (coefficients[m].x, coefficients[m].y);
-                let (cu, cv) = if row == 0 { (a, -b) } else { (b, a) };
-                let v = t[m] as usize;
-                match pinned[v] {
-                    Some(fixed) => constant += cu * fixed.x + cv * fixed.y,
-                    None => {
-                        entries.push((column[v], cu));
-                        entries.push((free + column[v], cv));
-                    }
-                }
-            }
-            for &(i, wi) in &entries {
-                for &(j, wj) in &entries {
-                    *normal.entry((i, j)).or_default() += wi * wj;
-                }
-                rhs[(i, 0)] -= wi * constant;
-            }
+        add_row(std::array::from_fn(|m| (c[m].x, -c[m].y)), t, 0.0);
+        add_row(std::array::from_fn(|m| (c[m].y, c[m].x)), t, 0.0);
+        // ∇φ_m = perp(edge_m) / area2; times √(area2) that is perp(edge_m) w.
+        let f = DVec2::new(direction.dot(x_axis), direction.dot(y_axis)).normalize_or_zero();
+        if f == DVec2::ZERO {
+            continue;
         }
+        let along: [f64; 3] = edges.map(|e| e.perp().dot(f) * w);
+        let (field, size) = (field_weight.sqrt(), SIZE_WEIGHT.sqrt());
+        add_row(along.map(|a| (0.0, field * a)), t, 0.0);
+        add_row(along.map(|a| (size * a, 0.0)), t, -size * area2.sqrt());
     }
     let mut entries: Vec<((usize, usize), f64)> = normal.into_iter().collect();
     entries.sort_unstable_by_key(|&(key, _)| key);
     let triplets: Vec<Triplet<usize, usize, f64>> = entries.iter().map(|&((r, c), w)| Triplet::new(r, c, w)).collect();
     let matrix = SparseColMat::<usize, f64>::try_new_from_triplets(unknowns, unknowns, &triplets).ok()?;
-    // The normal equations are symmetric positive definite (two pins fix
-    // the similarity): Cholesky, reading the lower side only, is several
-    // times cheaper than LU.
+    // The normal equations are symmetric positive definite (the pin fixes
+    // the place, the field the turn, the size term the size): Cholesky,
+    // reading the lower side only, is several times cheaper than LU.
     let solved = matrix.sp_cholesky(faer::Side::Lower).ok()?.solve(&rhs);
     let uv: Vec<DVec2> = (0..n)
-        .map(|v| pinned[v].unwrap_or_else(|| DVec2::new(solved[(column[v], 0)], solved[(free + column[v], 0)])))
+        .map(|v| {
+            if v == pin as usize {
+                DVec2::ZERO
+            } else {
+                DVec2::new(solved[(column[v], 0)], solved[(free + column[v], 0)])
+            }
+        })
         .collect();
     uv.iter().all(|p| p.is_finite()).then_some(uv)
 }
@@ -338,7 +398,9 @@ mod tests {
             .unwrap();
         let faces: Vec<u32> = graph.within(&[seed], 20.0).into_iter().map(|(f, _)| f).collect();
         let tangent = DVec3::Z.cross(surface.face_normal(seed)).normalize();
-        let patch = Patch::lay_flat(&surface, faces.clone(), seed, tangent, DVec2::new(5.0, 5.0)).unwrap();
+        let field = GuidanceField::around_axis(&surface);
+        let patch =
+            Patch::lay_flat(&surface, faces.clone(), seed, (&field, FIELD_WEIGHT), DVec2::new(5.0, 5.0)).unwrap();
         assert!(patch.distortion < 1.02, "distortion {}", patch.distortion);
         // Lengths between base vertices' images match their distance
         // along the surface (around the cylinder and up it).
@@ -361,6 +423,47 @@ mod tests {
         assert!(b.iter().all(|&c| (c - 1.0 / 3.0).abs() < 1e-6));
     }
 
+    /// The parallel through a seed on a sphere's upper half is no geodesic
+    /// (it bends by 1/30 mm⁻¹ at 45° on a 30 mm sphere). Laid flat with
+    /// the field round the axis, it is still one straight row, `v` the
+    /// same all along it; a conformal map alone bends it off the row by
+    /// about 1 mm, 8 mm from the seed (κ L² / 2).
+    #[test]
+    fn the_parallel_through_the_seed_lays_flat_as_a_straight_row() {
+        let surface = SurfaceMesh::new(builtin_base("sphere").unwrap()).unwrap();
+        let graph = FaceGraph::new(&surface);
+        let centre = DVec3::new(0.0, 0.0, 30.0);
+        let latitude = |p: DVec3| ((p - centre).z / (p - centre).length()).asin();
+        let seed = (0..surface.triangles().len() as u32)
+            .min_by(|&a, &b| {
+                let off = |f: u32| (latitude(graph.centres[f as usize]) - 45f64.to_radians()).abs();
+                off(a).total_cmp(&off(b))
+            })
+            .unwrap();
+        let faces: Vec<u32> = graph.within(&[seed], 12.0).into_iter().map(|(f, _)| f).collect();
+        let field = GuidanceField::around_axis(&surface);
+        let bent = |weight: f64| {
+            let patch = Patch::lay_flat(&surface, faces.clone(), seed, (&field, weight), DVec2::ZERO).unwrap();
+            let seed_latitude = latitude(graph.centres[seed as usize]);
+            let mut worst: f64 = 0.0;
+            let mut along: f64 = 0.0;
+            for &f in &faces {
+                let p = graph.centres[f as usize];
+                // Faces on the parallel: within 0.1 mm of it, up or down.
+                if (latitude(p) - seed_latitude).abs() * 30.0 < 0.1 {
+                    let flat = patch.to_flat(f, [1.0 / 3.0; 3]).unwrap();
+                    worst = worst.max(flat.y.abs());
+                    along = along.max(flat.x.abs());
+                }
+            }
+            assert!(along > 7.0, "the parallel runs {along} mm in the patch");
+            worst
+        };
+        let (followed, conformal) = (bent(FIELD_WEIGHT), bent(LIGHT_FIELD_WEIGHT));
+        assert!(followed < 0.25, "the row bends {followed} mm off the parallel");
+        assert!(conformal > 0.7, "the conformal map alone bends it {conformal} mm: this test tests nothing");
+    }
+
     /// A whole sphere is no disk; half of one distorts within the limit
     /// only if small enough.
     #[test]
@@ -368,17 +471,15 @@ mod tests {
         let surface = SurfaceMesh::new(builtin_base("sphere").unwrap()).unwrap();
         let graph = FaceGraph::new(&surface);
         let all: Vec<u32> = (0..surface.triangles().len() as u32).collect();
-        let tangent = DVec3::X;
-        assert_eq!(Patch::lay_flat(&surface, all, 0, tangent, DVec2::ZERO).err(), Some(Unflat::NotDisk));
+        let field = GuidanceField::around_axis(&surface);
+        assert_eq!(Patch::lay_flat(&surface, all, 0, (&field, FIELD_WEIGHT), DVec2::ZERO).err(), Some(Unflat::NotDisk));
         let seed = 5000;
         let small: Vec<u32> = graph.within(&[seed], 15.0).into_iter().map(|(f, _)| f).collect();
-        let normal = surface.face_normal(seed);
-        let t = normal.any_orthonormal_vector();
-        let patch = Patch::lay_flat(&surface, small, seed, t, DVec2::ZERO).unwrap();
+        let patch = Patch::lay_flat(&surface, small, seed, (&field, FIELD_WEIGHT), DVec2::ZERO).unwrap();
         assert!(patch.distortion < MAX_AREA_DISTORTION);
         let big: Vec<u32> = graph.within(&[seed], 80.0).into_iter().map(|(f, _)| f).collect();
         assert!(matches!(
-            Patch::lay_flat(&surface, big, seed, t, DVec2::ZERO),
+            Patch::lay_flat(&surface, big, seed, (&field, FIELD_WEIGHT), DVec2::ZERO),
             Err(Unflat::Distorted(_) | Unflat::NotDisk)
         ));
     }
