@@ -1,10 +1,9 @@
 //! Quilts a built-in base with a built-in swatch and prints what it did:
 //! `cargo run -p tracery-core --release --example quilt_surface -- [BASE] [SWATCH] [SCALE] [OUT.stl] [SEED]`.
 //!
-//! Two measures of the result that the quilting never reads: `bare`, the
+//! Three measures of the result that the quilting never reads: `bare`, the
 //! share of the base's area (all but the faces it stands on) farther than
-//! the swatch's height plus 1, 2 and 4 mm from every texture vertex; and
-//! `runs`, the median length of the elements along their longest axis, mm
+//! 1.5, 3 and 5 mm from every texture vertex; `runs`, the median length of the elements along their longest axis, mm
 //! (woven threads broken into short runs show as short ones); and `tilt`,
 //! the median angle between an element's longest axis and the nearer of
 //! round the `z` axis or across that, 0° to 45° (threads running round a
@@ -44,12 +43,12 @@ fn main() {
     let bare: Vec<String> =
         [1.5, 3.0, 5.0].iter().map(|&d| format!("{:.3}", bare_share(&surface, &vertices, d))).collect();
     let bare = bare.join("/");
-    let mut runs: Vec<f64> = quilt.elements.iter().map(|e| longest_extent(&e.vertices)).collect();
-    runs.sort_by(f64::total_cmp);
-    let run = runs.get(runs.len() / 2).copied().unwrap_or(0.0);
-    let mut tilts: Vec<f64> = quilt.elements.iter().map(|e| tilt_deg(&e.vertices)).collect();
-    tilts.sort_by(f64::total_cmp);
-    let tilt = tilts.get(tilts.len() / 2).copied().unwrap_or(0.0);
+    let (mut runs, mut tilts): (Vec<f64>, Vec<f64>) = quilt.elements.iter().map(|e| run_and_tilt(&e.vertices)).unzip();
+    let median = |values: &mut Vec<f64>| {
+        values.sort_by(f64::total_cmp);
+        values.get(values.len() / 2).copied().unwrap_or(0.0)
+    };
+    let (run, tilt) = (median(&mut runs), median(&mut tilts));
     println!(
         "{base} + {}: {} ms, bare {bare}, runs {run:.1} mm, tilt {tilt:.1}°, {} patches, {} elements ({} crossing), {} faces; {:?}; {:?}",
         swatch.name,
@@ -100,33 +99,23 @@ fn bare_share(surface: &SurfaceMesh, points: &[DVec3], reach_mm: f64) -> f64 {
     bare / total.max(f64::MIN_POSITIVE)
 }
 
-/// The angle between `points`' principal axis and the nearer of round
-/// the `z` axis (at their centre) or square to that, degrees.
-fn tilt_deg(points: &[DVec3]) -> f64 {
+/// How far `points` reach along their principal axis (the covariance's
+/// leading eigenvector, by power iteration), mm; and the angle between
+/// that axis and the nearer of round the `z` axis (at their centre) or
+/// square to that, degrees.
+fn run_and_tilt(points: &[DVec3]) -> (f64, f64) {
     let centre = points.iter().sum::<DVec3>() / points.len().max(1) as f64;
-    let around = DVec3::Z.cross(centre.with_z(0.0)).normalize_or_zero();
-    let angle = principal_axis(points).dot(around).abs().min(1.0).acos().to_degrees();
-    angle.min(90.0 - angle)
-}
-
-/// The covariance's leading eigenvector (power iteration), unit.
-fn principal_axis(points: &[DVec3]) -> DVec3 {
-    let mean = points.iter().sum::<DVec3>() / points.len().max(1) as f64;
     let mut cov = glam::DMat3::ZERO;
     for &p in points {
-        let d = p - mean;
+        let d = p - centre;
         cov += glam::DMat3::from_cols(d * d.x, d * d.y, d * d.z);
     }
     let mut axis = DVec3::new(1.0, 0.7, 0.3);
     for _ in 0..50 {
         axis = (cov * axis).normalize_or_zero();
     }
-    axis
-}
-
-/// How far `points` reach along their principal axis, mm.
-fn longest_extent(points: &[DVec3]) -> f64 {
-    let axis = principal_axis(points);
     let (lo, hi) = points.iter().map(|p| p.dot(axis)).fold((f64::MAX, f64::MIN), |(lo, hi), d| (lo.min(d), hi.max(d)));
-    (hi - lo).max(0.0)
+    let around = DVec3::Z.cross(centre.with_z(0.0)).normalize_or_zero();
+    let angle = axis.dot(around).abs().min(1.0).acos().to_degrees();
+    ((hi - lo).max(0.0), angle.min(90.0 - angle))
 }

@@ -6,7 +6,6 @@
 use tracery_core::DVec2;
 use tracery_core::control::Control;
 use tracery_core::geom::{Rect, brush_stroke, centre_lines, union};
-use tracery_core::product::Fact;
 use tracery_core::quality::curve_statistics_within;
 use tracery_core::region_fill::{CurveExemplar, Settings, make_product, parse_region};
 
@@ -161,10 +160,7 @@ fn corpus_crossings(exemplar: &CurveExemplar) -> (f64, usize) {
     let paths: Vec<_> = product.paths_mm.iter().map(|p| (p.points_mm.clone(), p.closed)).collect();
     let crossings =
         curve_statistics_within(&paths, &region.bounds().unwrap(), settings.radius_mm()).crossings_per_100mm;
-    let cut = match product.facts.get("crossings_cut") {
-        Some(Fact::Count(n)) => *n,
-        other => panic!("the fill reports its cut crossings as a count, not {other:?}"),
-    };
+    let cut = product.facts.count("crossings_cut").expect("the fill reports its cut crossings as a count");
     (crossings, cut)
 }
 

@@ -20,7 +20,7 @@ use glam::{DVec2, DVec3};
 use super::faces::{ElementFaces, Faces};
 use super::matching::{Input, MARGIN_CELLS, Neighbourhood, best_translation, reach_mm, thin};
 use super::merge::merge_patch;
-use super::patch::{FIELD_MAX_DISTORTION, FIELD_WEIGHT, FaceGraph, LIGHT_FIELD_WEIGHT, Patch, triangle_area_3d};
+use super::patch::{FaceGraph, Patch, triangle_area_3d};
 use super::shell::{Shell, ShellStretch};
 use super::zones::{Zone, Zones, boxes_overlap};
 use super::{Element, GuidanceField, MAX_QUILT_TRIANGLES, Quilt, QuiltError, Settings, Swatch};
@@ -285,14 +285,7 @@ fn grow_patch(
     let mut radius = radius_mm;
     for _ in 0..PATCH_TRIES {
         let faces: Vec<u32> = graph.within(&[seed], radius).into_iter().map(|(f, _)| f).collect();
-        // The size is the largest that lays flat keeping angles first (see
-        // `LIGHT_FIELD_WEIGHT`); at that size, rows along the field where
-        // that keeps area within its tighter limit. One solve per size
-        // tried, and one more: the sizes the field's rows would allow are
-        // never larger.
-        if let Ok(conformal) = Patch::lay_flat(surface, faces.clone(), seed, (field, LIGHT_FIELD_WEIGHT), seed_uv) {
-            let along = Patch::lay_flat(surface, faces, seed, (field, FIELD_WEIGHT), seed_uv);
-            let patch = along.ok().filter(|p| p.distortion <= FIELD_MAX_DISTORTION).unwrap_or(conformal);
+        if let Ok(patch) = Patch::lay_flat(surface, faces, seed, field, seed_uv) {
             report.max_patch_distortion = report.max_patch_distortion.max(patch.distortion);
             return Some(patch);
         }

@@ -40,20 +40,20 @@ pub const MAX_AREA_DISTORTION: f64 = 4.0;
 /// turn of the rows off the field costs about what as large a shear does.
 /// Where the field can be followed conformally (round a surface of
 /// revolution) both vanish together.
-pub const FIELD_WEIGHT: f64 = 1.0;
+const FIELD_WEIGHT: f64 = 1.0;
 
 /// Where following the field distorts area past [`FIELD_MAX_DISTORTION`]
 /// (round the pole of a field turning about it, as on a vase's flat top,
 /// Mercator's map grows without bound), the patch is laid flat nearly
 /// conformally: the field at this weight only sets the turn.
-pub const LIGHT_FIELD_WEIGHT: f64 = 1e-2;
+const LIGHT_FIELD_WEIGHT: f64 = 1e-2;
 
 /// The most a patch laid flat along the field may grow or shrink a
 /// triangle's area, tighter than [`MAX_AREA_DISTORTION`]: Mercator's map
 /// keeps angles but not size, and rivets or scales placed through it
 /// would come out up to twice as wide as their neighbours, overlapping
 /// them. Past this, angles and size come first.
-pub const FIELD_MAX_DISTORTION: f64 = 2.0;
+const FIELD_MAX_DISTORTION: f64 = 2.0;
 
 /// What sets the flat patch's size, lightly: `u` growing at unit rate along
 /// the field. Conformal maps and the field's lines are alike at any
@@ -140,14 +140,31 @@ pub(super) struct Patch {
 impl Patch {
     /// Lays `faces` of `surface` (nearest the seed first) flat, with
     /// `seed`'s centroid at `seed_uv`, the lines of `field` (a tangent per
-    /// base face) held to constant `v` as far as angles allow at
-    /// `field_weight` ([`FIELD_WEIGHT`]), and the field at the seed along `+u`.
+    /// base face) held to constant `v` where that keeps area within
+    /// [`FIELD_MAX_DISTORTION`], else nearly conformally
+    /// ([`LIGHT_FIELD_WEIGHT`]), and the field at the seed along `+u`. Refused
+    /// when even the nearly conformal map distorts past
+    /// [`MAX_AREA_DISTORTION`]: the rows along the field would not do better.
     pub fn lay_flat(
         surface: &SurfaceMesh,
         faces: Vec<u32>,
         seed: u32,
-        (field, field_weight): (&GuidanceField, f64),
+        field: &GuidanceField,
         seed_uv: DVec2,
+    ) -> Result<Patch, Unflat> {
+        Self::lay_flat_within(surface, faces, seed, field, seed_uv, FIELD_MAX_DISTORTION)
+    }
+
+    /// As [`Patch::lay_flat`], with rows along the field where they grow or
+    /// shrink no triangle's area by more than `rows_max_distortion` (below 1,
+    /// never: the paper's way).
+    fn lay_flat_within(
+        surface: &SurfaceMesh,
+        faces: Vec<u32>,
+        seed: u32,
+        field: &GuidanceField,
+        seed_uv: DVec2,
+        rows_max_distortion: f64,
     ) -> Result<Patch, Unflat> {
         let mut vertex_of: Vec<u32> = Vec::new();
         let mut local: FxHashMap<u32, u32> = FxHashMap::default();
@@ -174,40 +191,20 @@ impl Patch {
         }
         let seed_local = faces.iter().position(|&f| f == seed).ok_or(Unflat::NotDisk)?;
         let directions: Vec<DVec3> = faces.iter().map(|&f| field.direction(f)).collect();
-        let mut uv = lscm_along(&positions, &triangles, (&directions, field_weight), triangles[seed_local][0])
-            .ok_or(Unflat::Solve)?;
-        // LSCM keeps angles, not size: scale so the flat area is the base's.
         let area_3d: Vec<f64> = triangles.iter().map(|t| triangle_area_3d(t.map(|v| positions[v as usize]))).collect();
-        let area_uv = |uv: &[DVec2], t: &[u32; 3]| {
-            let [a, b, c] = t.map(|v| uv[v as usize]);
-            0.5 * (b - a).perp_dot(c - a)
+        let flat = Flat {
+            positions: &positions,
+            triangles: &triangles,
+            directions: &directions,
+            area_3d: &area_3d,
+            seed_local,
         };
-        // The scale is true near the seed, where the patch is matched and
-        // most of what it adds lies: the faces are nearest first, and the
-        // nearest quarter sets it.
-        let core = (triangles.len() / 4).max(1);
-        let core_flat: f64 = triangles[..core].iter().map(|t| area_uv(&uv, t)).sum();
-        if core_flat.abs() <= f64::MIN_POSITIVE {
-            return Err(Unflat::Solve);
-        }
-        // A mirror image (the solve does not know which side is up) is
-        // turned over: patch triangles run counter-clockwise like the base's.
-        let flip = if core_flat < 0.0 { -1.0 } else { 1.0 };
-        let scale = (area_3d[..core].iter().sum::<f64>() / core_flat.abs()).sqrt();
-        for p in &mut uv {
-            *p = DVec2::new(p.x, flip * p.y) * scale;
-        }
-        let mut distortion: f64 = 1.0;
-        for (t, a3) in triangles.iter().zip(&area_3d) {
-            let a2 = area_uv(&uv, t);
-            if a2 <= 0.0 || *a3 <= 0.0 {
-                return Err(Unflat::Distorted(f64::INFINITY));
-            }
-            distortion = distortion.max((a2 / a3).max(a3 / a2));
-        }
-        if distortion > MAX_AREA_DISTORTION {
-            return Err(Unflat::Distorted(distortion));
-        }
+        let conformal = flat.solve(LIGHT_FIELD_WEIGHT)?;
+        let (mut uv, distortion) = if rows_max_distortion >= 1.0 {
+            flat.solve(FIELD_WEIGHT).ok().filter(|&(_, d)| d <= rows_max_distortion).unwrap_or(conformal)
+        } else {
+            conformal
+        };
         // Turn and move: the field at the seed along +u, the seed where asked.
         let seed_t = triangles[seed_local];
         let jacobian = Jacobian::of(seed_t.map(|v| positions[v as usize]), seed_t.map(|v| uv[v as usize]));
@@ -248,6 +245,62 @@ impl Patch {
     /// The base's `u` direction (unit, tangent) over face `face`, if in the patch.
     pub fn u_axis(&self, face: u32) -> Option<DVec3> {
         self.local_of_face.get(&face).map(|&t| self.u_axis[t as usize])
+    }
+}
+
+/// A disk of base triangles to lay flat, in the patch's own numbering.
+struct Flat<'a> {
+    positions: &'a [DVec3],
+    triangles: &'a [[u32; 3]],
+    /// The field's tangent over each triangle.
+    directions: &'a [DVec3],
+    /// Each triangle's area in space, mm².
+    area_3d: &'a [f64],
+    seed_local: usize,
+}
+
+impl Flat<'_> {
+    /// The triangles laid flat with the field at `field_weight`
+    /// ([`lscm_along`]), scaled so the quarter nearest the seed keeps its
+    /// area, with the largest growth or shrinking of a triangle's area;
+    /// refused past [`MAX_AREA_DISTORTION`] or where a triangle flips.
+    fn solve(&self, field_weight: f64) -> Result<(Vec<DVec2>, f64), Unflat> {
+        let (triangles, area_3d) = (self.triangles, self.area_3d);
+        let pin = triangles[self.seed_local][0];
+        let mut uv =
+            lscm_along(self.positions, triangles, (self.directions, field_weight), pin).ok_or(Unflat::Solve)?;
+        // LSCM keeps angles, not size: scale so the flat area is the base's.
+        let area_uv = |uv: &[DVec2], t: &[u32; 3]| {
+            let [a, b, c] = t.map(|v| uv[v as usize]);
+            0.5 * (b - a).perp_dot(c - a)
+        };
+        // The scale is true near the seed, where the patch is matched and
+        // most of what it adds lies: the faces are nearest first, and the
+        // nearest quarter sets it.
+        let core = (triangles.len() / 4).max(1);
+        let core_flat: f64 = triangles[..core].iter().map(|t| area_uv(&uv, t)).sum();
+        if core_flat.abs() <= f64::MIN_POSITIVE {
+            return Err(Unflat::Solve);
+        }
+        // A mirror image (the solve does not know which side is up) is
+        // turned over: patch triangles run counter-clockwise like the base's.
+        let flip = if core_flat < 0.0 { -1.0 } else { 1.0 };
+        let scale = (area_3d[..core].iter().sum::<f64>() / core_flat.abs()).sqrt();
+        for p in &mut uv {
+            *p = DVec2::new(p.x, flip * p.y) * scale;
+        }
+        let mut distortion: f64 = 1.0;
+        for (t, a3) in triangles.iter().zip(area_3d) {
+            let a2 = area_uv(&uv, t);
+            if a2 <= 0.0 || *a3 <= 0.0 {
+                return Err(Unflat::Distorted(f64::INFINITY));
+            }
+            distortion = distortion.max((a2 / a3).max(a3 / a2));
+        }
+        if distortion > MAX_AREA_DISTORTION {
+            return Err(Unflat::Distorted(distortion));
+        }
+        Ok((uv, distortion))
     }
 }
 
@@ -399,8 +452,7 @@ mod tests {
         let faces: Vec<u32> = graph.within(&[seed], 20.0).into_iter().map(|(f, _)| f).collect();
         let tangent = DVec3::Z.cross(surface.face_normal(seed)).normalize();
         let field = GuidanceField::around_axis(&surface);
-        let patch =
-            Patch::lay_flat(&surface, faces.clone(), seed, (&field, FIELD_WEIGHT), DVec2::new(5.0, 5.0)).unwrap();
+        let patch = Patch::lay_flat(&surface, faces.clone(), seed, &field, DVec2::new(5.0, 5.0)).unwrap();
         assert!(patch.distortion < 1.02, "distortion {}", patch.distortion);
         // Lengths between base vertices' images match their distance
         // along the surface (around the cylinder and up it).
@@ -442,8 +494,11 @@ mod tests {
             .unwrap();
         let faces: Vec<u32> = graph.within(&[seed], 12.0).into_iter().map(|(f, _)| f).collect();
         let field = GuidanceField::around_axis(&surface);
-        let bent = |weight: f64| {
-            let patch = Patch::lay_flat(&surface, faces.clone(), seed, (&field, weight), DVec2::ZERO).unwrap();
+        // Rows along the field up to the general limit (this patch needs
+        // more than the tighter one), or never.
+        let bent = |rows_max_distortion: f64| {
+            let patch = Patch::lay_flat_within(&surface, faces.clone(), seed, &field, DVec2::ZERO, rows_max_distortion)
+                .unwrap();
             let seed_latitude = latitude(graph.centres[seed as usize]);
             let mut worst: f64 = 0.0;
             let mut along: f64 = 0.0;
@@ -459,7 +514,7 @@ mod tests {
             assert!(along > 7.0, "the parallel runs {along} mm in the patch");
             worst
         };
-        let (followed, conformal) = (bent(FIELD_WEIGHT), bent(LIGHT_FIELD_WEIGHT));
+        let (followed, conformal) = (bent(MAX_AREA_DISTORTION), bent(0.0));
         assert!(followed < 0.25, "the row bends {followed} mm off the parallel");
         assert!(conformal > 0.7, "the conformal map alone bends it {conformal} mm: this test tests nothing");
     }
@@ -472,14 +527,14 @@ mod tests {
         let graph = FaceGraph::new(&surface);
         let all: Vec<u32> = (0..surface.triangles().len() as u32).collect();
         let field = GuidanceField::around_axis(&surface);
-        assert_eq!(Patch::lay_flat(&surface, all, 0, (&field, FIELD_WEIGHT), DVec2::ZERO).err(), Some(Unflat::NotDisk));
+        assert_eq!(Patch::lay_flat(&surface, all, 0, &field, DVec2::ZERO).err(), Some(Unflat::NotDisk));
         let seed = 5000;
         let small: Vec<u32> = graph.within(&[seed], 15.0).into_iter().map(|(f, _)| f).collect();
-        let patch = Patch::lay_flat(&surface, small, seed, (&field, FIELD_WEIGHT), DVec2::ZERO).unwrap();
+        let patch = Patch::lay_flat(&surface, small, seed, &field, DVec2::ZERO).unwrap();
         assert!(patch.distortion < MAX_AREA_DISTORTION);
         let big: Vec<u32> = graph.within(&[seed], 80.0).into_iter().map(|(f, _)| f).collect();
         assert!(matches!(
-            Patch::lay_flat(&surface, big, seed, (&field, FIELD_WEIGHT), DVec2::ZERO),
+            Patch::lay_flat(&surface, big, seed, &field, DVec2::ZERO),
             Err(Unflat::Distorted(_) | Unflat::NotDisk)
         ));
     }
