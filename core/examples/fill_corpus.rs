@@ -49,7 +49,9 @@ enum Outcome {
         ms: f64,
         paths: Vec<(Vec<tracery_core::DVec2>, bool)>,
         crossings_ok: bool,
-        cover_ratio: f64,
+        /// `None` where the exemplar's own bounds have no inside (one
+        /// straight line), so there is no coverage to compare with.
+        cover_ratio: Option<f64>,
         elements: ElementsSeen,
     },
     Refused(String),
@@ -83,9 +85,12 @@ fn main() {
         };
         match &outcome {
             Outcome::Filled { ms, paths, crossings_ok, cover_ratio, elements } => eprintln!(
-                "{name}: {} paths and {} elements in {ms:.0} ms, coverage {cover_ratio:.2} of the exemplar's{}{}",
+                "{name}: {} paths and {} elements in {ms:.0} ms, {}{}{}",
                 paths.len(),
                 elements.shapes.len(),
+                cover_ratio.map_or("no coverage to compare (the exemplar is flat)".into(), |r| format!(
+                    "coverage {r:.2} of the exemplar's"
+                )),
                 elements.density_ratio.map_or(String::new(), |r| format!(", element density {r:.2} of the exemplar's")),
                 if *crossings_ok { "" } else { ", crosses where the exemplar does not" }
             ),
@@ -135,7 +140,7 @@ fn fill(exemplar: &CurveExemplar, region: &Region, bounds: &Rect, size_mm: f64, 
             let paths: Vec<_> = product.paths_mm.iter().map(|p| (p.points_mm.clone(), p.closed)).collect();
             let out = curve_statistics_within(&paths, bounds, margin);
             let crossings_ok = ex.crossings_per_100mm > 0.0 || out.crossings_per_100mm == 0.0;
-            let cover_ratio = coverage(&paths, region, margin) / ex_cover.max(1e-9);
+            let cover_ratio = (ex_cover > 0.0).then(|| coverage(&paths, region, margin) / ex_cover);
             let elements = elements_seen(&scaled, &product.filled_mm.polygons, &paths, bounds, margin);
             Outcome::Filled { ms, paths, crossings_ok, cover_ratio, elements }
         }
@@ -180,7 +185,7 @@ fn summarize(outcomes: &[(String, Outcome)], size_mm: f64, limit: Duration) {
     let mut times: Vec<f64> = filled.iter().map(|f| f.1).collect();
     times.sort_by(f64::total_cmp);
     let at = |q: f64| times.get(((times.len() as f64 - 1.0) * q).round() as usize).copied().unwrap_or(0.0);
-    let mut covers: Vec<f64> = filled.iter().map(|f| f.3).collect();
+    let mut covers: Vec<f64> = filled.iter().filter_map(|f| f.3).collect();
     covers.sort_by(f64::total_cmp);
     let cover_at = |q: f64| covers.get(((covers.len() as f64 - 1.0) * q).round() as usize).copied().unwrap_or(0.0);
     println!(
