@@ -6,7 +6,10 @@ use std::sync::atomic::{AtomicBool, AtomicUsize, Ordering};
 
 use rayon::prelude::*;
 
+mod bound;
 mod narrowing;
+
+use bound::CompletionBound;
 
 use super::state::{Bucket, Interner, LengthGrid, NO_PARENT, PRUNED, State, Trace, UNKNOWN};
 use super::{BAND_MARGIN, CurveKind, STATE_BYTES, Solution, SolveOptions, tolerance_levels};
@@ -159,17 +162,27 @@ pub(super) struct Search<'p> {
     /// piece of the current one are ever open, and their tables are reused.
     buckets: Vec<Bucket>,
     best: Option<(f64, u32)>,
+    /// The least any finish costs after each piece and length.
+    bound: CompletionBound,
+    /// The cost of the best pattern known: partial patterns that cannot
+    /// finish below it are dropped.
+    incumbent: f64,
 }
 
 impl<'p> Search<'p> {
     fn new(problem: &'p Problem<'p>, starts: &'p [usize], min_rank: u32, window: (f64, f64)) -> Self {
         let n = problem.n();
-        let compatible = (0..n)
+        let compatible: Vec<Vec<usize>> = (0..n)
             .map(|a| (0..n).filter(|&b| problem.rank[b] >= min_rank && !problem.cost[a * n + b].is_nan()).collect())
             .collect();
         // A piece of `k` whole steps moves the key by at most `k + 1`.
         let ring = problem.steps.iter().copied().max().unwrap_or(1) as usize + 2;
+        let closing = (problem.options.curve == CurveKind::Closed).then(|| starts[0]);
+        let bound =
+            CompletionBound::new(&problem.cost, &compatible, &problem.steps, problem.grid.quantum, window.0, closing);
         Search {
+            bound,
+            incumbent: f64::INFINITY,
             problem,
             starts,
             window,
@@ -265,14 +278,18 @@ impl<'p> Search<'p> {
                 self.keep_cheapest(width, &mut open, &mut autos);
             }
             for (i, state) in open.iter().enumerate() {
-                let index = self.arena.len() as u32;
-                self.arena.push(Trace { parent: state.parent, delta: state.delta, piece: state.piece });
                 let auto = autos.get(i).copied().unwrap_or_default();
                 let a = state.piece as usize;
+                let floor = if self.variety() { problem.options.variety * auto.value() } else { 0.0 };
+                // The incumbent may have dropped since the state was kept.
+                if !self.promising(state.cost + floor, a, state.length) {
+                    continue;
+                }
+                let index = self.arena.len() as u32;
+                self.arena.push(Trace { parent: state.parent, delta: state.delta, piece: state.piece });
                 if state.length >= self.window.0 {
                     self.consider_end(state, &auto, index);
                 }
-                let floor = if self.variety() { problem.options.variety * auto.value() } else { 0.0 };
                 for k in 0..self.compatible[a].len() {
                     let b = self.compatible[a][k];
                     let next_length = state.length + problem.widths[b];
@@ -285,6 +302,9 @@ impl<'p> Search<'p> {
                     let Some(next) = self.follow(state, index, key, b) else {
                         continue;
                     };
+                    if !self.promising(next.cost + floor, b, next.length) {
+                        continue;
+                    }
                     self.add(next_key, next, floor, || auto.push(b, &problem.similarity))?;
                 }
             }
@@ -332,6 +352,17 @@ impl<'p> Search<'p> {
         if self.best.is_none_or(|(b, _)| total < b) {
             self.best = Some((total, index));
         }
+        self.incumbent = self.incumbent.min(total);
+    }
+
+    /// Whether a partial pattern after `piece` at `length`, having cost
+    /// `cost` (its variety penalty so far included; that penalty only
+    /// grows), can still finish and cost no more than the incumbent. The
+    /// slack keeps ties that differ only by rounding.
+    #[inline]
+    fn promising(&self, cost: f64, piece: usize, length: f64) -> bool {
+        let least = cost + self.bound.after(piece, length);
+        least.is_finite() && least <= self.incumbent + INCUMBENT_SLACK * (1.0 + self.incumbent.abs())
     }
 
     /// The state after `state` (in the arena at `parent`, keyed `key`) when
@@ -389,6 +420,10 @@ pub(super) fn band_allowance(band_height: f64, extent: f64) -> f64 {
 /// the band, as a fraction of the band: stitching bends the pieces to close
 /// the mismatch, and beyond this the bend would show.
 pub const MAX_HOLD: f64 = 0.2;
+
+/// Slack on the incumbent's cost, relative: sums of the same seam costs in
+/// another order differ in the last bits.
+const INCUMBENT_SLACK: f64 = 1e-9;
 
 /// Slack on the accepted lengths, relative to the target length.
 const LENGTH_SLACK: f64 = 1e-9;
