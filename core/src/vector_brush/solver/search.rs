@@ -355,16 +355,6 @@ impl<'p> Search<'p> {
         self.incumbent = self.incumbent.min(total);
     }
 
-    /// Whether a partial pattern after `piece` at `length`, having cost
-    /// `cost` (its variety penalty so far included; that penalty only
-    /// grows), can still finish and cost no more than the incumbent. The
-    /// slack keeps ties that differ only by rounding.
-    #[inline]
-    fn promising(&self, cost: f64, piece: usize, length: f64) -> bool {
-        let least = cost + self.bound.after(piece, length);
-        least.is_finite() && least <= self.incumbent + INCUMBENT_SLACK * (1.0 + self.incumbent.abs())
-    }
-
     /// The state after `state` (in the arena at `parent`, keyed `key`) when
     /// piece `b` follows it, or `None` where `b` cannot be held in the band
     /// or the targets could no longer be met.
@@ -420,10 +410,6 @@ pub(super) fn band_allowance(band_height: f64, extent: f64) -> f64 {
 /// the band, as a fraction of the band: stitching bends the pieces to close
 /// the mismatch, and beyond this the bend would show.
 pub const MAX_HOLD: f64 = 0.2;
-
-/// Slack on the incumbent's cost, relative: sums of the same seam costs in
-/// another order differ in the last bits.
-const INCUMBENT_SLACK: f64 = 1e-9;
 
 /// Slack on the accepted lengths, relative to the target length.
 const LENGTH_SLACK: f64 = 1e-9;

@@ -3,6 +3,24 @@
 //! (branch and bound), and those that can no longer reach an accepted length
 //! and close.
 
+use super::Search;
+
+/// Slack on the incumbent's cost, relative: sums of the same seam costs in
+/// another order differ in the last bits.
+const INCUMBENT_SLACK: f64 = 1e-9;
+
+impl Search<'_> {
+    /// Whether a partial pattern after `piece` at `length`, having cost
+    /// `cost` (its variety penalty so far included; that penalty only
+    /// grows), can still finish and cost no more than the incumbent. The
+    /// slack keeps ties that differ only by rounding.
+    #[inline]
+    pub(super) fn promising(&self, cost: f64, piece: usize, length: f64) -> bool {
+        let least = cost + self.bound.after(piece, length);
+        least.is_finite() && least <= self.incumbent + INCUMBENT_SLACK * (1.0 + self.incumbent.abs())
+    }
+}
+
 /// The least seam cost of any way to finish a pattern whose last piece is
 /// `a`, relaxed: topology, band and variety are ignored, and widths are
 /// rounded up to whole quanta, so the bound never exceeds the true cost of
