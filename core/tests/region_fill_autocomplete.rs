@@ -160,3 +160,57 @@ fn berries_drawn_stay_and_predicted_berries_go_on_beside_them() {
         assert!(product.region_mm.contains(c), "the drawn berry at {c} is not printed");
     }
 }
+
+/// The longest stretch of `path` lying within `near_mm` of one of the
+/// `drawn` strokes, sampled every 0.05 mm.
+fn longest_stretch_along(path: &CurvePath, drawn: &[CurvePath], near_mm: f64) -> f64 {
+    let (mut longest, mut run) = (0.0f64, 0.0f64);
+    let mut previous: Option<DVec2> = None;
+    let n = path.points_mm.len();
+    let ends = path.points_mm.iter().skip(1).chain(path.closed.then(|| &path.points_mm[0]));
+    for (&a, &b) in path.points_mm.iter().zip(ends).take(n.max(1)) {
+        let steps = (a.distance(b) / 0.05).ceil().max(1.0) as usize;
+        for j in 0..=steps {
+            let p = a.lerp(b, j as f64 / steps as f64);
+            let on = drawn.iter().any(|d| d.distance_to(p) <= near_mm);
+            let step = previous.map_or(0.0, |q| q.distance(p));
+            run = if on { run + step } else { 0.0 };
+            longest = longest.max(run);
+            previous = Some(p);
+        }
+    }
+    longest
+}
+
+#[test]
+fn no_prediction_runs_along_a_drawn_stroke() {
+    // A hand-drawn wavy stem across the middle of the window, as a person
+    // starts a vine or a berry branch, and the exemplar's own strip.
+    let stem = CurvePath {
+        points_mm: (0..=60).map(|i| DVec2::new(3.0 + 0.55 * i as f64, 22.0 + 2.5 * (0.35 * i as f64).sin())).collect(),
+        closed: false,
+    };
+    let window = Region::rectangle(&Rect::new(DVec2::ZERO, DVec2::splat(WINDOW_MM)));
+    let mut worst = (0.0, String::new());
+    for name in ["berries", "vine", "waves", "crackle", "meander", "scales", "spirals"] {
+        let exemplar = CurveExemplar::builtin(name).unwrap();
+        for (what, drawn) in [("stem", vec![stem.clone()]), ("strip", drawn_strip(&exemplar))] {
+            for seed in 1..=2 {
+                let mut settings = Settings::default();
+                settings.seed = seed;
+                let predicted =
+                    predict(&exemplar, &window, &Drawn::paths(drawn.clone()), &settings, &Control::default()).unwrap();
+                for path in &predicted.paths {
+                    let along = longest_stretch_along(path, &drawn, 0.3);
+                    if along > worst.0 {
+                        worst = (along, format!("{name}, {what}, seed {seed}"));
+                    }
+                }
+            }
+        }
+    }
+    // A path meeting a stroke at a slant lies near it for a short way; one
+    // doubling it lies on it for millimetres.
+    assert!(worst.0 <= 1.5, "a predicted path runs {:.1} mm along a drawn stroke ({})", worst.0, worst.1);
+    eprintln!("longest stretch along a drawn stroke: {:.2} mm ({})", worst.0, worst.1);
+}

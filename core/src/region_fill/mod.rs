@@ -6,6 +6,7 @@
 //! ([`SampleGrid`], [`neighbourhood_distance`]) by robust matching
 //! ([`robust_match`]), and the PatchMatch search step ([`search`]).
 
+mod along_drawn;
 mod assignment;
 mod builtin;
 mod corners;
@@ -28,6 +29,7 @@ mod search;
 mod settings;
 mod synthesis;
 
+pub use along_drawn::{ALONG_DRAWN_MIN_RUN_SPACINGS, ALONG_DRAWN_SPACINGS, cut_runs_along_drawn};
 pub use assignment::{MatchedPair, assign_edges, assign_positions, existence_votes};
 pub use builtin::{BUILTIN_CURVES, builtin_curves, builtin_shapes};
 pub use corners::corner_vertices;

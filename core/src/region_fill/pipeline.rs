@@ -16,8 +16,8 @@ use glam::DVec2;
 use super::fragments::{degrees, key};
 use super::{
     CurveExemplar, CurvePath, Elements, FillError, FragmentLimits, JOIN_TOLERANCE_MM, PlacedElement, SampleGraph,
-    Settings, Synthesized, check_region, crossings, cut_crossings, join_drawn_ends, smooth_paths_oriented,
-    synthesize_oriented,
+    Settings, Synthesized, check_region, crossings, cut_crossings, cut_runs_along_drawn, join_drawn_ends,
+    smooth_paths_oriented, synthesize_oriented,
 };
 
 /// Paths left shorter than this many sample spacings by clipping are
@@ -91,6 +91,9 @@ pub struct Prediction {
     /// Crossings the synthesis made where the exemplar has none, cut
     /// after reconstruction ([`cut_crossings`]).
     pub crossings_cut: usize,
+    /// Stretches of new paths that ran along a drawn stroke, cut out
+    /// ([`cut_runs_along_drawn`]).
+    pub along_drawn_cut: usize,
 }
 
 impl Prediction {
@@ -178,7 +181,7 @@ fn finish(
     control: &Control,
     mut timings: Timings,
 ) -> Result<Product, FillError> {
-    let Prediction { paths, elements, crossings_cut } = predicted;
+    let Prediction { paths, elements, crossings_cut, along_drawn_cut } = predicted;
     let printed: Vec<CurvePath> = paths.iter().chain(&clip_paths(&drawn.paths, region, 0.0)).cloned().collect();
     let shapes: Vec<Polygon> = elements.iter().chain(&drawn.shapes).cloned().collect();
     let (print, bridges) = timings.time("strokes", || print_region(&printed, &shapes, region, settings));
@@ -194,6 +197,7 @@ fn finish(
     facts.push("region_area_mm2", Fact::Number(region.area()));
     facts.push("coverage", Fact::Number(print.area() / region.area()));
     facts.push("crossings_cut", Fact::Count(crossings_cut));
+    facts.push("along_drawn_cut", Fact::Count(along_drawn_cut));
     if settings.one_piece {
         facts.push("bridges", Fact::Count(bridges));
         facts.push("one_piece", Fact::Text(if topology.components == 1 { "joined" } else { "not joined" }.into()));
@@ -303,6 +307,8 @@ fn predict_timed(
     }
     let min_mm = MIN_CLIPPED_SPACINGS * settings.delta_mm;
     let paths = timings.time("clip", || clip_paths(&smooth, region, min_mm));
+    // No new line doubles one that was drawn.
+    let (paths, along_drawn_cut) = cut_runs_along_drawn(paths, &drawn, settings.delta_mm, min_mm);
     // Where the exemplar's paths never pass through each other, the new
     // ones do not either, nor through what was drawn.
     let (paths, crossings_cut) = if crossings(&exemplar.paths).is_empty() {
@@ -313,7 +319,7 @@ fn predict_timed(
     let elements = timings.time("elements", || {
         elements_within(&exemplar.elements.with_placed(elements), &exemplar.elements, region, drawn_shapes)
     });
-    Ok(Prediction { paths, elements, crossings_cut })
+    Ok(Prediction { paths, elements, crossings_cut, along_drawn_cut })
 }
 
 /// The shapes of `elements` that lie wholly within `region`: an element
