@@ -15,7 +15,9 @@ use std::sync::Arc;
 use tracery_core::DVec2;
 use tracery_core::control::Control;
 use tracery_core::geom::{Polygon, Rect, Region, clip_polylines, intersection};
-use tracery_core::region_fill::{CurveExemplar, CurvePath, Drawn, FillError, Prediction, Settings, predict};
+use tracery_core::region_fill::{
+    CurveExemplar, CurvePath, Drawn, FillError, Prediction, Settings, corner_vertices, predict,
+};
 
 use crate::document::{ModeSettings, PenItem, RegionFillItem};
 use crate::modes::{region_fill, same};
@@ -31,6 +33,68 @@ pub const AUTOCOMPLETE_WINDOW_MM: f64 = 40.0;
 /// Spacing of the control points an accepted path keeps, mm: close enough
 /// to keep a spiral's turns, few enough to edit.
 pub const ACCEPTED_SPACING_MM: f64 = 1.5;
+
+/// How far either side of a vertex a path's turn is measured to find its
+/// corners, mm.
+const CORNER_REACH_MM: f64 = 0.5;
+
+/// A vertex where an accepted path turns by more than this (radians, about
+/// 30°, within [`CORNER_REACH_MM`] either side) keeps a control point. Lower
+/// than the synthesis's [`tracery_core::region_fill::CORNER_TURN`]: a stalk leaving its stem at 45°
+/// is a corner to keep, and a control point on a vertex of a smooth turn
+/// (a spiral's centre) costs nothing.
+const ACCEPTED_CORNER_TURN: f64 = 0.5;
+
+/// The control points an accepted path keeps: about every
+/// [`ACCEPTED_SPACING_MM`], and on every corner sharper than
+/// [`ACCEPTED_CORNER_TURN`], so that where a stalk turns onto its stem, or a fret's
+/// key turns, the pen stroke turns too. Spaced evenly alone, the points
+/// stepped over such corners, and the accepted stroke rounded a stalk's V
+/// into a U. A piece too short to space points along (a berry's stalk)
+/// keeps its own points rather than being lost.
+pub fn accepted_control_points(path: &CurvePath) -> Vec<DVec2> {
+    let points = &path.points_mm;
+    let corners = corner_vertices(path, CORNER_REACH_MM, ACCEPTED_CORNER_TURN);
+    let spaced = |piece: &[DVec2]| {
+        stroke_to_control_points(piece, ACCEPTED_SPACING_MM, 0.0).map_or_else(|| piece.to_vec(), |(p, _)| p)
+    };
+    if corners.is_empty() {
+        return if path.closed {
+            // Evenly round a loop, back to its start, which is dropped again.
+            let mut around = points.clone();
+            around.push(points[0]);
+            let mut out = spaced(&around);
+            if out.len() > 3 && out.last() == out.first() {
+                out.pop();
+            }
+            out
+        } else {
+            spaced(points)
+        };
+    }
+    // Cut at the corners: a loop from its first corner round to it again.
+    let mut stops: Vec<usize> = corners.clone();
+    let along: Vec<DVec2> = if path.closed {
+        let first = corners[0];
+        stops = corners.iter().map(|&c| c - first).collect();
+        stops.push(points.len());
+        points[first..].iter().chain(&points[..=first]).copied().collect()
+    } else {
+        stops.insert(0, 0);
+        stops.push(points.len() - 1);
+        points.clone()
+    };
+    let mut out: Vec<DVec2> = Vec::new();
+    for w in stops.windows(2) {
+        let piece = spaced(&along[w[0]..=w[1]]);
+        let skip = usize::from(!out.is_empty());
+        out.extend(piece.into_iter().skip(skip));
+    }
+    if path.closed {
+        out.pop();
+    }
+    out
+}
 
 /// Suggested paths in a window of a fill.
 #[derive(Clone, Debug)]
@@ -256,11 +320,7 @@ impl TraceryApp {
             }
             match suggestion(&prediction, k) {
                 Some(Suggestion::Path(path)) if path.points_mm.len() >= 2 => {
-                    // A path too short to space control points along (a
-                    // berry's stalk) keeps its own points rather than being lost.
-                    let points = stroke_to_control_points(&path.points_mm, ACCEPTED_SPACING_MM, 0.0)
-                        .map_or_else(|| path.points_mm.clone(), |(points, _)| points);
-                    self.doc.add_curve(points, path.closed, ModeSettings::Pen(pen.clone()));
+                    self.doc.add_curve(accepted_control_points(path), path.closed, ModeSettings::Pen(pen.clone()));
                     paths += 1;
                 }
                 Some(Suggestion::Element(shape)) => {
@@ -281,5 +341,39 @@ impl TraceryApp {
     pub fn reject_predictions(&mut self) {
         self.predictions = None;
         self.predictor.retain(&[]);
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn an_accepted_path_keeps_its_corners_as_control_points() {
+        // A stalk's V: 2.3 mm up to the stem, then 12 mm along it.
+        let corner = DVec2::new(2.0, 0.0);
+        let v = CurvePath { points_mm: vec![DVec2::new(0.5, 1.7), corner, DVec2::new(14.0, 0.0)], closed: false };
+        let points = accepted_control_points(&v);
+        assert!(points.contains(&corner), "the corner is lost: {points:?}");
+        assert_eq!((points[0], *points.last().unwrap()), (v.points_mm[0], v.points_mm[2]));
+        let gaps: Vec<f64> = points.windows(2).map(|w| w[0].distance(w[1])).collect();
+        assert!(gaps.iter().all(|&g| g <= 2.0 * ACCEPTED_SPACING_MM), "points too far apart: {gaps:?}");
+        // A square loop keeps its four corners, and no point twice.
+        let square = CurvePath {
+            points_mm: vec![DVec2::ZERO, DVec2::new(8.0, 0.0), DVec2::new(8.0, 8.0), DVec2::new(0.0, 8.0)],
+            closed: true,
+        };
+        let points = accepted_control_points(&square);
+        assert!(square.points_mm.iter().all(|c| points.contains(c)), "{points:?}");
+        assert!(points.len() >= 16 && points.first() != points.last());
+        // A ring has no corner and is spaced evenly all round.
+        let ring: Vec<DVec2> =
+            (0..90).map(|k| DVec2::from_angle(k as f64 / 90.0 * std::f64::consts::TAU) * 6.0).collect();
+        let points = accepted_control_points(&CurvePath { points_mm: ring, closed: true });
+        assert!(
+            (20..=30).contains(&points.len()) && points[0].distance(*points.last().unwrap()) > 0.5,
+            "{}",
+            points.len()
+        );
     }
 }
