@@ -1,6 +1,6 @@
 //! Extrusion of a planar region into a closed, watertight solid.
 
-use std::collections::HashMap;
+use rustc_hash::FxHashMap;
 
 use spade::handles::FixedVertexHandle;
 use spade::{ConstrainedDelaunayTriangulation, Point2, Triangulation};
@@ -171,7 +171,7 @@ fn extrude_exactly(
     // points that rounding to `f32` made coincide.
     crate::geom::separate_touching_rings(&mut rounded, TOUCH_GAP_MM, round_to_f32);
     let key = |p: glam::DVec2| ((p.x as f32).to_bits(), (p.y as f32).to_bits());
-    let mut ids: HashMap<(u32, u32), usize> = HashMap::new();
+    let mut ids: FxHashMap<(u32, u32), usize> = FxHashMap::default();
     let mut points: Vec<Point2<f64>> = Vec::new();
     let mut rings: Vec<Vec<usize>> = Vec::new();
     for ring in &rounded {
