@@ -71,15 +71,19 @@ pub fn cut_runs_along_drawn(
             continue;
         }
         cut += runs.len();
-        for piece in pieces_between(&points, &runs, path.closed) {
-            let mut piece = piece;
+        let run_edge = |i: usize| runs.iter().any(|&(start, end)| i == start || i == end);
+        for piece in pieces_between(points.len(), &runs, path.closed) {
+            let mut points_mm: Vec<DVec2> = piece.iter().map(|&i| points[i]).collect();
             // Ends cut on a stroke join it exactly.
-            for end in [0, piece.len() - 1] {
-                if on_run_edge(&points, &runs, piece[end]) {
-                    piece[end] = nearest_on(&drawn, piece[end]).point_mm;
-                }
+            let (first, last) = (piece[0], piece[piece.len() - 1]);
+            if run_edge(first) {
+                points_mm[0] = nearest[first].point_mm;
             }
-            let piece = CurvePath { points_mm: piece, closed: false };
+            if run_edge(last) {
+                let end = points_mm.len() - 1;
+                points_mm[end] = nearest[last].point_mm;
+            }
+            let piece = CurvePath { points_mm, closed: false };
             if piece.length_mm() >= min_mm {
                 out.push(piece);
             }
@@ -149,32 +153,29 @@ fn long_runs(points: &[DVec2], on: &[bool], min_mm: f64) -> Vec<(usize, usize)> 
     runs
 }
 
-/// The pieces of `points` outside the `runs`, each including the run's
-/// first or last point where it meets one. A loop cut at least once is
-/// opened so that the piece across its start is one piece.
-fn pieces_between(points: &[DVec2], runs: &[(usize, usize)], closed: bool) -> Vec<Vec<DVec2>> {
-    let last = points.len() - 1;
-    let mut pieces: Vec<Vec<DVec2>> = Vec::new();
+/// The pieces outside the `runs` of a path of `count` points, as indices,
+/// each including the run's first or last point where it meets one. A loop
+/// cut at least once is opened so that the piece across its start is one
+/// piece.
+fn pieces_between(count: usize, runs: &[(usize, usize)], closed: bool) -> Vec<Vec<usize>> {
+    let last = count - 1;
+    let mut pieces: Vec<Vec<usize>> = Vec::new();
     let mut from = 0;
     for &(start, end) in runs {
         if start > from {
-            pieces.push(points[from..=start].to_vec());
+            pieces.push((from..=start).collect());
         }
         from = end;
     }
     if from < last {
-        pieces.push(points[from..].to_vec());
+        pieces.push((from..=last).collect());
     }
-    // Across a loop's start, the last piece runs on into the first.
+    // Across a loop's start (its last point is its first again), the last
+    // piece runs on into the first.
     if closed && pieces.len() >= 2 && runs[0].0 > 0 && runs[runs.len() - 1].1 < last {
         let first = pieces.remove(0);
         pieces.last_mut().expect("two pieces").extend(first.into_iter().skip(1));
     }
     pieces.retain(|p| p.len() >= 2);
     pieces
-}
-
-/// Whether `p` is one of the points where a run begins or ends.
-fn on_run_edge(points: &[DVec2], runs: &[(usize, usize)], p: DVec2) -> bool {
-    runs.iter().any(|&(s, e)| points[s] == p || points[e] == p)
 }
