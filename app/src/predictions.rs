@@ -55,34 +55,31 @@ const ACCEPTED_CORNER_TURN: f64 = 0.5;
 pub fn accepted_control_points(path: &CurvePath) -> Vec<DVec2> {
     let points = &path.points_mm;
     let corners = corner_vertices(path, CORNER_REACH_MM, ACCEPTED_CORNER_TURN);
-    let spaced = |piece: &[DVec2]| {
-        stroke_to_control_points(piece, ACCEPTED_SPACING_MM, 0.0).map_or_else(|| piece.to_vec(), |(p, _)| p)
-    };
-    if corners.is_empty() {
-        return if path.closed {
-            // Evenly round a loop, back to its start, which is dropped again.
-            let mut around = points.clone();
-            around.push(points[0]);
-            let mut out = spaced(&around);
-            if out.len() > 3 && out.last() == out.first() {
-                out.pop();
+    // Each piece keeps both its ends, even one that comes back to its start
+    // (which `stroke_to_control_points` reads as a loop and drops).
+    let spaced = |piece: &[DVec2]| match stroke_to_control_points(piece, ACCEPTED_SPACING_MM, 0.0) {
+        Some((mut spaced, closed)) => {
+            if closed {
+                spaced.push(spaced[0]);
             }
-            out
-        } else {
-            spaced(points)
-        };
-    }
-    // Cut at the corners: a loop from its first corner round to it again.
-    let mut stops: Vec<usize> = corners.clone();
-    let along: Vec<DVec2> = if path.closed {
-        let first = corners[0];
-        stops = corners.iter().map(|&c| c - first).collect();
+            spaced
+        }
+        None => piece.to_vec(),
+    };
+    // Cut at the corners: a loop from its first corner (or its start) round
+    // to it again.
+    let (along, stops): (Vec<DVec2>, Vec<usize>) = if path.closed {
+        let first = corners.first().copied().unwrap_or(0);
+        let along = points[first..].iter().chain(&points[..=first]).copied().collect();
+        let mut stops: Vec<usize> = corners.iter().map(|&c| c - first).collect();
+        if stops.is_empty() {
+            stops.push(0);
+        }
         stops.push(points.len());
-        points[first..].iter().chain(&points[..=first]).copied().collect()
+        (along, stops)
     } else {
-        stops.insert(0, 0);
-        stops.push(points.len() - 1);
-        points.clone()
+        let stops = std::iter::once(0).chain(corners).chain(std::iter::once(points.len() - 1)).collect();
+        (points.clone(), stops)
     };
     let mut out: Vec<DVec2> = Vec::new();
     for w in stops.windows(2) {
@@ -90,7 +87,8 @@ pub fn accepted_control_points(path: &CurvePath) -> Vec<DVec2> {
         let skip = usize::from(!out.is_empty());
         out.extend(piece.into_iter().skip(skip));
     }
-    if path.closed {
+    // A loop's last point is its first again.
+    if path.closed && out.len() > 3 && out[0].distance(out[out.len() - 1]) <= 1e-9 {
         out.pop();
     }
     out
