@@ -164,9 +164,6 @@ pub(super) struct Search<'p> {
     best: Option<(f64, u32)>,
     /// The least any finish costs after each piece and length.
     bound: CompletionBound,
-    /// The cost of the best pattern known: partial patterns that cannot
-    /// finish below it are dropped.
-    incumbent: f64,
 }
 
 impl<'p> Search<'p> {
@@ -182,7 +179,6 @@ impl<'p> Search<'p> {
             CompletionBound::new(&problem.cost, &compatible, &problem.steps, problem.grid.quantum, window.0, closing);
         Search {
             bound,
-            incumbent: f64::INFINITY,
             problem,
             starts,
             window,
@@ -352,7 +348,6 @@ impl<'p> Search<'p> {
         if self.best.is_none_or(|(b, _)| total < b) {
             self.best = Some((total, index));
         }
-        self.incumbent = self.incumbent.min(total);
     }
 
     /// The state after `state` (in the arena at `parent`, keyed `key`) when

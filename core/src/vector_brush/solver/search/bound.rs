@@ -12,12 +12,14 @@ const INCUMBENT_SLACK: f64 = 1e-9;
 impl Search<'_> {
     /// Whether a partial pattern after `piece` at `length`, having cost
     /// `cost` (its variety penalty so far included; that penalty only
-    /// grows), can still finish and cost no more than the incumbent. The
-    /// slack keeps ties that differ only by rounding.
+    /// grows), can still finish and cost no more than the best pattern this
+    /// search has found (the incumbent). The slack keeps ties that differ
+    /// only by rounding.
     #[inline]
     pub(super) fn promising(&self, cost: f64, piece: usize, length: f64) -> bool {
         let least = cost + self.bound.after(piece, length);
-        least.is_finite() && least <= self.incumbent + INCUMBENT_SLACK * (1.0 + self.incumbent.abs())
+        let incumbent = self.best.map_or(f64::INFINITY, |(total, _)| total);
+        least.is_finite() && least <= incumbent + INCUMBENT_SLACK * (1.0 + incumbent.abs())
     }
 }
 
