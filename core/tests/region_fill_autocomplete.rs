@@ -166,9 +166,8 @@ fn berries_drawn_stay_and_predicted_berries_go_on_beside_them() {
 fn longest_stretch_along(path: &CurvePath, drawn: &[CurvePath], near_mm: f64) -> f64 {
     let (mut longest, mut run) = (0.0f64, 0.0f64);
     let mut previous: Option<DVec2> = None;
-    let n = path.points_mm.len();
     let ends = path.points_mm.iter().skip(1).chain(path.closed.then(|| &path.points_mm[0]));
-    for (&a, &b) in path.points_mm.iter().zip(ends).take(n.max(1)) {
+    for (&a, &b) in path.points_mm.iter().zip(ends) {
         let steps = (a.distance(b) / 0.05).ceil().max(1.0) as usize;
         for j in 0..=steps {
             let p = a.lerp(b, j as f64 / steps as f64);
