@@ -268,9 +268,15 @@ fn crosses_itself(e: &Element) -> bool {
 /// sides meet at a right angle: a concave crease that folds a shell offset
 /// along the normals.
 fn grooved_post() -> SurfaceMesh {
+    turned(&[(10.0, 0.0), (10.0, 9.0), (7.0, 12.0), (10.0, 15.0), (10.0, 24.0), (0.0, 24.0)])
+}
+
+/// A closed solid turned about `z`: its profile runs from the axis at
+/// `z = 0` through `corners` (radius, height), the last on the axis, in
+/// steps of at most 0.75 mm, with 64 segments round.
+fn turned(corners: &[(f64, f64)]) -> SurfaceMesh {
     let profile: Vec<(f64, f64)> = {
         let mut p = vec![(0.0, 0.0)];
-        let corners: [(f64, f64); 6] = [(10.0, 0.0), (10.0, 9.0), (7.0, 12.0), (10.0, 15.0), (10.0, 24.0), (0.0, 24.0)];
         for w in corners.windows(2).fold(vec![corners[0]], |mut acc, w| {
             let steps = (w[1].0 - w[0].0).hypot(w[1].1 - w[0].1).div_euclid(0.75).max(1.0) as usize;
             acc.extend((1..=steps).map(|k| {
@@ -294,7 +300,7 @@ fn grooved_post() -> SurfaceMesh {
         }
     }
     let top = mesh.vertices.len() as u32;
-    mesh.vertices.push([0.0, 0.0, 24.0]);
+    mesh.vertices.push([0.0, 0.0, profile[profile.len() - 1].1]);
     let ring = |i: usize, k: u32| 1 + i as u32 * segments + k % segments;
     for k in 0..segments {
         mesh.triangles.push([0, ring(0, k + 1), ring(0, k)]);
@@ -400,4 +406,46 @@ fn strokes_drawn_up_the_cylinder_turn_the_scales() {
     let vase = SurfaceMesh::new(tracery_core::surface::builtin_base("vase").unwrap()).unwrap();
     let err = quilt_surface(&swatch, &vase, &up, &settings, &Control::default()).err().unwrap();
     assert!(err.to_string().contains("made for a model"), "{err}");
+}
+
+/// How far round the `z` axis an element reaches, radians: a full turn
+/// less the widest gap between its vertices' angles.
+fn turn_round_axis(e: &Element) -> f64 {
+    let mut angles: Vec<f64> = e.vertices.iter().map(|v| v.y.atan2(v.x)).collect();
+    angles.sort_by(f64::total_cmp);
+    let widest = angles
+        .windows(2)
+        .map(|w| w[1] - w[0])
+        .fold(angles[0] + std::f64::consts::TAU - angles[angles.len() - 1], f64::max);
+    std::f64::consts::TAU - widest
+}
+
+/// Threads of the weave laid round a post are stitched on from patch to
+/// patch, so most run well past one swatch: measured by how far round the
+/// axis each reaches, not by what merging counted.
+#[test]
+fn woven_threads_run_on_round_a_post_across_patches() {
+    let post = turned(&[(10.0, 0.0), (10.0, 24.0), (0.0, 24.0)]);
+    let swatch = builtin_swatch("weave").unwrap().scaled(0.5);
+    let quilt =
+        quilt_surface(&swatch, &post, &GuidanceField::around_axis(&post), &Settings::default(), &Control::default())
+            .unwrap();
+    assert!(quilt.elements.iter().all(closed));
+    assert_eq!(crossing_pairs(&quilt.elements), 0);
+    // Threads round the side, away from the top's edge: how far each runs.
+    let swatch_turn = swatch.size_mm().x / 10.0;
+    let mut turns: Vec<f64> = quilt
+        .elements
+        .iter()
+        .filter(|e| e.vertices.iter().all(|v| v.z > 2.0 && v.z < 22.0))
+        .map(turn_round_axis)
+        .collect();
+    turns.sort_by(f64::total_cmp);
+    let long = turns.iter().filter(|&&t| t > 1.5 * swatch_turn).count();
+    // Before the cut could take a thread's end lying just short of the new
+    // patch, the median was one swatch (1.25 rad) and 4 of 21 ran on past
+    // 1.5 swatches; after, 2.19 rad and 9 of 14.
+    let median = turns[turns.len() / 2];
+    assert!(median > 1.4 * swatch_turn, "median thread {median:.2} rad round the post, a swatch {swatch_turn:.2}");
+    assert!(long >= 6, "{long} of {} threads run on past 1.5 swatches", turns.len());
 }

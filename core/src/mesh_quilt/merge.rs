@@ -282,9 +282,22 @@ fn merge_pair(
 /// is not covered by what stays, then stitches the two.
 fn cut_and_stitch(c_out: &Element, c_in: &Element, grid: &impl Zones, reach_mm: f64) -> Option<Element> {
     let c = grid.cell_mm();
-    // Only triangles over the patch take part in the cut; the rest stay.
-    let active: Vec<u32> =
-        (0..c_out.triangles.len() as u32).filter(|&f| grid.zone(c_out.face_centre(f as usize)).in_patch()).collect();
+    // The output's triangles over the patch take part in the cut; the rest
+    // stay. On a curved base the patches' faces do not tile as a grid's
+    // cells do, and an output thread often ended just short of the new
+    // footprint, on faces an earlier patch claimed: nothing over the patch
+    // lay by the swatch element's new part, there was nothing to cut, and
+    // the thread's continuation was refused. So the triangles near enough
+    // to the footprint to move take part as well, when the element reaches
+    // beyond them: an element lying wholly that near (a link, a scale)
+    // would have nothing left to hold it, and the cut would take all of it.
+    let held = c_out.vertices.iter().any(|&v| !grid.near_footprint(v, WORK_CELLS + 1.0));
+    let active: Vec<u32> = (0..c_out.triangles.len() as u32)
+        .filter(|&f| {
+            let centre = c_out.face_centre(f as usize);
+            grid.zone(centre).in_patch() || (held && grid.near_footprint(centre, WORK_CELLS))
+        })
+        .collect();
     let mut node = vec![u32::MAX; c_out.triangles.len()];
     for (k, &f) in active.iter().enumerate() {
         node[f as usize] = k as u32;
