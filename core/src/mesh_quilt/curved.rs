@@ -111,6 +111,11 @@ impl Zones for SurfaceZones<'_> {
     fn near_box(&self, margin_mm: f64) -> (DVec3, DVec3) {
         (self.near_box.0 - DVec3::splat(margin_mm), self.near_box.1 + DVec3::splat(margin_mm))
     }
+
+    fn base(&self, p: DVec3) -> (DVec3, DVec3) {
+        let on = self.closest.point(p);
+        (on.position_mm, self.closest.surface.normal(on.face, on.barycentric))
+    }
 }
 
 /// Quilts `surface` with `swatch` (already scaled) in a shell as thick as

@@ -51,6 +51,35 @@ impl Element {
         self.to_mesh().sanity_check().is_ok()
     }
 
+    /// Whether the element is a thread: its vertices spread along one
+    /// direction [`THREAD_ASPECT`](super::THREAD_ASPECT) times as far as
+    /// along any other, whichever way it lies. A ring, a scale or a rivet
+    /// spreads as far two ways. Meant for swatch-sized elements: a thread
+    /// stitched round a whole model spreads every way.
+    ///
+    /// ```
+    /// use tracery_core::mesh_quilt::{torus, tube};
+    /// use glam::{DMat3, DVec3};
+    /// let thread = tube(&[DVec3::ZERO, DVec3::new(5.0, 5.0, 0.0), DVec3::new(10.0, 10.0, 1.0)], 0.5, 8, false);
+    /// assert!(thread.is_thread());
+    /// assert!(!torus(DVec3::ZERO, DMat3::IDENTITY, 4.0, 0.8, 32, 10).is_thread());
+    /// ```
+    pub fn is_thread(&self) -> bool {
+        let n = self.vertices.len() as f64;
+        if n < 4.0 {
+            return false;
+        }
+        let centre = self.vertices.iter().copied().sum::<DVec3>() / n;
+        let covariance = faer::Mat::<f64>::from_fn(3, 3, |i, j| {
+            self.vertices.iter().map(|&v| (v - centre)[i] * (v - centre)[j]).sum::<f64>() / n
+        });
+        // Eigenvalues come in increasing order; they are variances, so
+        // their square roots are spreads.
+        let Ok(variances) = covariance.self_adjoint_eigenvalues(faer::Side::Lower) else { return false };
+        let (long, across) = (variances[2].max(0.0).sqrt(), variances[1].max(0.0).sqrt());
+        long >= super::THREAD_ASPECT * across
+    }
+
     /// A shared [`Mesh`] as an element (whole, however many parts it has).
     pub fn from_mesh(mesh: &Mesh) -> Element {
         Element {

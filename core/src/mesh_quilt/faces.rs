@@ -4,7 +4,7 @@
 use glam::DVec3;
 use parry3d_f64::math::Pose;
 use parry3d_f64::math::Vector as PVector;
-use parry3d_f64::query::{PointQueryWithLocation, intersection_test};
+use parry3d_f64::query::{PointQueryWithLocation, Ray, RayCast, intersection_test};
 use parry3d_f64::shape::TriMesh;
 
 use super::Element;
@@ -87,6 +87,27 @@ impl Faces {
             face: local,
             normal: self.normals[face as usize],
         }
+    }
+
+    /// How far along the unit vector `direction_mm` from `origin_mm` the
+    /// last face within `max_mm` lies, 0 when none does: where a ray
+    /// starting inside or below closed elements leaves them for good.
+    pub fn last_hit_along(&self, origin_mm: DVec3, direction_mm: DVec3, max_mm: f64) -> f64 {
+        let Some(bvh) = &self.bvh else { return 0.0 };
+        // A step past each hit, so the next cast does not find it again.
+        const STEP_MM: f64 = 1e-6;
+        let (mut travelled, mut last) = (0.0, 0.0);
+        while travelled < max_mm {
+            let start = origin_mm + direction_mm * travelled;
+            let ray = Ray::new(
+                PVector::new(start.x, start.y, start.z),
+                PVector::new(direction_mm.x, direction_mm.y, direction_mm.z),
+            );
+            let Some(t) = bvh.cast_local_ray(&ray, max_mm - travelled, false) else { break };
+            last = travelled + t;
+            travelled = last + STEP_MM;
+        }
+        last
     }
 
     /// Whether any face of these crosses or touches any face of `other`.

@@ -10,6 +10,7 @@ use glam::DVec3;
 use super::cut::{FORCED, min_cut_keep};
 use super::deform::{Constraint, deform};
 use super::faces::{Closest, ElementFaces, Faces};
+use super::give_way::{InTheWay, allowed_heights, give_way};
 use super::self_crossing::crosses_itself;
 use super::stitch::stitch;
 use super::zones::{Zone, Zones, boxes_overlap};
@@ -33,6 +34,10 @@ const SPECK_TRIANGLES: usize = 12;
 /// The gap left between the two pieces of a stitch, in the swatch
 /// element's mean edge lengths, for the strip to bridge.
 const SEAM_GAP_EDGES: f64 = 1.0;
+
+/// Rounds of bending an element over and under what it would cross before
+/// it is left out.
+const GIVE_WAY_ROUNDS: usize = 3;
 
 /// What merging did, summed over patches.
 #[derive(Clone, Debug, Default, PartialEq, Eq)]
@@ -162,11 +167,13 @@ pub(super) fn merge_patch(
         .filter(|&(&i, &(o, _))| best_in.get(&o).is_some_and(|&(j, _)| j == i))
         .map(|(&i, &(o, _))| (i, o))
         .collect();
-    let mut changes: Vec<(Option<usize>, Element)> = Vec::new();
+    // Each change says whether its swatch element is a thread, which may
+    // bend over and under what it would cross.
+    let mut changes: Vec<(Option<usize>, Element, bool)> = Vec::new();
     for (i, element) in placed.iter().enumerate() {
         let Some(&o) = matched.get(&i) else {
             counts.added += 1;
-            changes.push((None, element.clone()));
+            changes.push((None, element.clone(), element.is_thread()));
             continue;
         };
         let k = near[o];
@@ -174,22 +181,17 @@ pub(super) fn merge_patch(
         let to_out: Vec<Pair> = backward[i].iter().filter(|p| p.other == o).copied().collect();
         match merge_pair(&output[k], element, &to_in, &to_out, grid, settings.mu, reach_mm, &mut counts) {
             Merged::Out => {}
-            Merged::In => changes.push((Some(k), element.clone())),
-            Merged::Stitched(e) => changes.push((Some(k), e)),
+            Merged::In => changes.push((Some(k), element.clone(), element.is_thread())),
+            Merged::Stitched(e) => changes.push((Some(k), e, element.is_thread())),
         }
     }
     // Nothing goes in that would cross what is there: the print would not
     // be sound.
-    for (replaces, element) in changes {
-        let faces = Faces::new([&element]);
-        let bounds = element.bounds();
-        let others: Vec<usize> =
-            (0..output.len()).filter(|&k| Some(k) != replaces && boxes_overlap(output[k].bounds(), bounds)).collect();
-        let crosses = others.iter().any(|&k| faces.intersects(output_faces.get(k, &output[k])));
-        if crosses {
+    for (replaces, element, thread) in changes {
+        let Some((element, faces)) = admit(element, replaces, thread, output, output_faces, grid) else {
             counts.collided += 1;
             continue;
-        }
+        };
         match replaces {
             Some(k) => {
                 output_faces.set(k, faces);
@@ -202,6 +204,54 @@ pub(super) fn merge_patch(
         }
     }
     counts
+}
+
+/// `element` as it may go into `output` (replacing element `replaces`)
+/// without crossing what is there, with its faces: as it is, or, a
+/// `thread`, bent over and under what it would cross. None when it cannot
+/// go in. Only threads bend: a ring or a rivet bent over its neighbour is
+/// no longer the swatch's.
+pub(super) fn admit(
+    mut element: Element,
+    replaces: Option<usize>,
+    thread: bool,
+    output: &[Element],
+    output_faces: &mut ElementFaces,
+    grid: &impl Zones,
+) -> Option<(Element, Faces)> {
+    // A bend moves the element by less than its least extent: what it may
+    // meet then lies in its box grown by that.
+    let (lo, hi) = element.bounds();
+    let margin = if thread { DVec3::splat((hi - lo).min_element()) } else { DVec3::ZERO };
+    let others: Vec<usize> = (0..output.len())
+        .filter(|&k| Some(k) != replaces && boxes_overlap(output[k].bounds(), (lo - margin, hi + margin)))
+        .collect();
+    for &k in &others {
+        output_faces.get(k, &output[k]);
+    }
+    let mut bent = false;
+    let mut allowed_mm = None;
+    for round in 0..=GIVE_WAY_ROUNDS {
+        let faces = Faces::new([&element]);
+        let hits: Vec<usize> =
+            others.iter().copied().filter(|&k| output_faces.built(k).is_some_and(|o| faces.intersects(o))).collect();
+        if hits.is_empty() {
+            // A bend that folds the element through itself would print
+            // wrong.
+            return (!bent || !crosses_itself(&element)).then_some((element, faces));
+        }
+        if round == GIVE_WAY_ROUNDS || !thread {
+            return None;
+        }
+        let in_the_way: Vec<InTheWay> =
+            hits.iter().filter_map(|&k| Some(InTheWay { faces: output_faces.built(k)? })).collect();
+        // Only what merging may move moves: the rest of a long thread is
+        // done.
+        let allowed_mm = *allowed_mm.get_or_insert_with(|| allowed_heights(&element, grid));
+        element = give_way(&element, &in_the_way, grid, allowed_mm, |v| grid.near_footprint(v, WORK_CELLS))?;
+        bent = true;
+    }
+    None
 }
 
 /// Moves `element` halfway to its pairs' points (the paper's equation 5),

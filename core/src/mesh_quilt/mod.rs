@@ -15,6 +15,7 @@ mod error;
 mod faces;
 mod field;
 mod foot;
+mod give_way;
 mod matching;
 mod merge;
 mod patch;

@@ -119,6 +119,10 @@ impl Zones for Grid {
             DVec3::new(i1 as f64 * c + margin_mm, j1 as f64 * c + margin_mm, f64::INFINITY),
         )
     }
+
+    fn base(&self, p: DVec3) -> (DVec3, DVec3) {
+        (p.with_z(0.0), DVec3::Z)
+    }
 }
 
 /// Quilts a `width_mm` × `depth_mm` area of the plane with `swatch`

@@ -41,6 +41,10 @@ pub(super) trait Zones: Sync {
     /// cells of the patch's footprint: output elements outside it are not
     /// looked at.
     fn near_box(&self, margin_mm: f64) -> (DVec3, DVec3);
+
+    /// The base's point nearest `p` and its outward normal there: heights
+    /// above the base are measured along it.
+    fn base(&self, p: DVec3) -> (DVec3, DVec3);
 }
 
 /// Whether two boxes overlap.
