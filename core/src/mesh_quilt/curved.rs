@@ -116,6 +116,10 @@ impl Zones for SurfaceZones<'_> {
         let on = self.closest.point(p);
         (on.position_mm, self.closest.surface.normal(on.face, on.barycentric))
     }
+
+    fn model_below(&self) -> bool {
+        true
+    }
 }
 
 /// Quilts `surface` with `swatch` (already scaled) in a shell as thick as

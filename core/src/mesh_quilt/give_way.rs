@@ -24,12 +24,17 @@ const LIFT_WEIGHT: f64 = 10.0;
 /// was; farther vertices stay put.
 const BEND_CELLS: f64 = 1.5;
 
-/// How far below its lowest point an element may go, in its mean edge
-/// lengths: rounding, not digging into the base.
-const RANGE_EDGES: f64 = 1.0;
+/// How far below its lowest point an element may dip into a model, as a
+/// share of its height: a thread passing under another where both were at
+/// their lowest sinks into the model there rather than being left out
+/// (0.74 mm for the weave at scale 0.6, with the sink 1.04 mm below the
+/// surface: a wall thinner than that would show it inside). On a plane the
+/// bed lies below, and nothing goes lower.
+const DIP: f64 = 0.3;
 
 /// How far above its highest point an element may rise, as a share of its
-/// height.
+/// height: a thread passing over another where both were at their highest
+/// rises by a thread's thickness, as in cloth.
 const HEADROOM: f64 = 0.5;
 
 /// An element in the way: its faces, for closest-point and ray queries.
@@ -38,18 +43,17 @@ pub(super) struct InTheWay<'a> {
     pub faces: &'a Faces,
 }
 
-/// The heights above the base, mm, between which `element` may be bent:
-/// down to its lowest point (below, the base may be thin), up by half its
-/// height above its highest (a thread passing over another where both were
-/// at their highest rises by a thread's thickness, as in cloth). Taken once,
-/// before the first round, so rounds do not add up.
+/// The heights above the base, mm, between which `element` may be bent
+/// (see [`DIP`] and [`HEADROOM`]). Taken once, before the first round, so
+/// rounds do not add up.
 pub(super) fn allowed_heights(element: &Element, zones: &impl Zones) -> (f64, f64) {
     let (low_mm, high_mm) = element
         .vertices
         .iter()
         .map(|&v| height_above(zones, v))
         .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), h| (lo.min(h), hi.max(h)));
-    (low_mm - RANGE_EDGES * element.mean_edge_mm(), high_mm + HEADROOM * (high_mm - low_mm))
+    let dip = if zones.model_below() { DIP } else { 0.0 };
+    (low_mm - dip * (high_mm - low_mm), high_mm + HEADROOM * (high_mm - low_mm))
 }
 
 fn height_above(zones: &impl Zones, p: DVec3) -> f64 {
@@ -183,7 +187,8 @@ mod tests {
     use super::super::zones::{Zone, Zones};
     use super::Element;
 
-    /// A plane whose every point is new to the patch, in cells of 2 mm.
+    /// A plane whose every point is new to the patch, in cells of 2 mm, on
+    /// the print bed.
     struct Flat;
 
     impl Zones for Flat {
@@ -201,6 +206,9 @@ mod tests {
         }
         fn base(&self, p: DVec3) -> (DVec3, DVec3) {
             (p.with_z(0.0), DVec3::Z)
+        }
+        fn model_below(&self) -> bool {
+            false
         }
     }
 
@@ -253,6 +261,7 @@ mod tests {
                 assert!(shift < 1e-9, "a vertex {:.1} mm from the crossing moved", (before.x - crossing_x).abs());
             }
             assert!(shift <= height, "a vertex moved {shift:.2} mm");
+            assert!(after.z >= row.bounds().0.z - 1e-9, "a vertex went {:.2} mm below the bed", -after.z);
             moved += (shift > 0.1) as usize;
         }
         assert!(moved > 0);

@@ -123,6 +123,10 @@ impl Zones for Grid {
     fn base(&self, p: DVec3) -> (DVec3, DVec3) {
         (p.with_z(0.0), DVec3::Z)
     }
+
+    fn model_below(&self) -> bool {
+        false
+    }
 }
 
 /// Quilts a `width_mm` × `depth_mm` area of the plane with `swatch`

@@ -45,6 +45,10 @@ pub(super) trait Zones: Sync {
     /// The base's point nearest `p` and its outward normal there: heights
     /// above the base are measured along it.
     fn base(&self, p: DVec3) -> (DVec3, DVec3);
+
+    /// Whether a model lies under the texture, which an element may dip
+    /// into; under a plane's texture lies the print bed.
+    fn model_below(&self) -> bool;
 }
 
 /// Whether two boxes overlap.
