@@ -92,12 +92,32 @@ impl Faces {
     /// How far along the unit vector `direction_mm` from `origin_mm` the
     /// last face within `max_mm` lies, 0 when none does: where a ray
     /// starting inside or below closed elements leaves them for good.
+    ///
+    /// ```
+    /// use glam::DVec3;
+    /// use tracery_core::mesh_quilt::{Faces, tube};
+    /// // A rod of radius 1 along x; a ray up from 3 mm below it passes in
+    /// // and out, and leaves it for good about 4 mm on.
+    /// let rod = tube(&[DVec3::ZERO, DVec3::X * 10.0], 1.0, 16, false);
+    /// let faces = Faces::new([&rod]);
+    /// let out = faces.last_hit_along(DVec3::new(5.0, 0.0, -3.0), DVec3::Z, 10.0);
+    /// assert!((out - 4.0).abs() < 0.05, "{out}");
+    /// // From inside it, straight to the top; beside it, nothing.
+    /// assert!((faces.last_hit_along(DVec3::new(5.0, 0.0, 0.0), DVec3::Z, 10.0) - 1.0).abs() < 0.05);
+    /// assert_eq!(faces.last_hit_along(DVec3::new(5.0, 3.0, -3.0), DVec3::Z, 10.0), 0.0);
+    /// ```
     pub fn last_hit_along(&self, origin_mm: DVec3, direction_mm: DVec3, max_mm: f64) -> f64 {
         let Some(bvh) = &self.bvh else { return 0.0 };
-        // A step past each hit, so the next cast does not find it again.
-        const STEP_MM: f64 = 1e-6;
+        // A step past each hit, so the next cast does not find it again;
+        // and a cap on the hits, so a ray grazing along a face, hitting it
+        // again at each step, ends.
+        const STEP_MM: f64 = 1e-5;
+        const MAX_HITS: usize = 64;
         let (mut travelled, mut last) = (0.0, 0.0);
-        while travelled < max_mm {
+        for _ in 0..MAX_HITS {
+            if travelled >= max_mm {
+                break;
+            }
             let start = origin_mm + direction_mm * travelled;
             let ray = Ray::new(
                 PVector::new(start.x, start.y, start.z),
