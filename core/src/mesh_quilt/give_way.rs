@@ -37,12 +37,6 @@ const DIP: f64 = 0.3;
 /// rises by a thread's thickness, as in cloth.
 const HEADROOM: f64 = 0.5;
 
-/// An element in the way: its faces, for closest-point and ray queries.
-pub(super) struct InTheWay<'a> {
-    /// Its faces.
-    pub faces: &'a Faces,
-}
-
 /// The heights above the base, mm, between which `element` may be bent
 /// (see [`DIP`] and [`HEADROOM`]). Taken once, before the first round, so
 /// rounds do not add up.
@@ -61,7 +55,8 @@ fn height_above(zones: &impl Zones, p: DVec3) -> f64 {
     (p - foot).dot(up)
 }
 
-/// `element` bent over or under `others` at each place it comes within
+/// `element` bent over or under the elements whose faces are `others` at
+/// each place it comes within
 /// its mean edge length of them, one round of bending; only vertices
 /// `movable` says may move. None when nothing is near, when a crossing
 /// cannot be passed within the heights `allowed_mm` (from
@@ -69,7 +64,7 @@ fn height_above(zones: &impl Zones, p: DVec3) -> f64 {
 /// result.
 pub(super) fn give_way(
     element: &Element,
-    others: &[InTheWay],
+    others: &[&Faces],
     zones: &impl Zones,
     allowed_mm: (f64, f64),
     movable: impl Fn(DVec3) -> bool,
@@ -82,8 +77,7 @@ pub(super) fn give_way(
         .iter()
         .map(|&v| {
             others.iter().any(|o| {
-                o.faces
-                    .closest_within(v, cell_mm)
+                o.closest_within(v, cell_mm)
                     .is_some_and(|hit| hit.distance_mm < gap_mm || (v - hit.point_mm).dot(hit.normal) < 0.0)
             })
         })
@@ -119,7 +113,7 @@ pub(super) fn give_way(
                 .iter()
                 .map(|&v| {
                     let p = element.vertices[v as usize];
-                    let t = others.iter().map(|o| o.faces.last_hit_along(p, direction, reach_mm)).fold(0.0, f64::max);
+                    let t = others.iter().map(|o| o.last_hit_along(p, direction, reach_mm)).fold(0.0, f64::max);
                     if t > 0.0 { t + gap_mm } else { 0.0 }
                 })
                 .fold(0.0, f64::max)

@@ -10,7 +10,7 @@ use glam::DVec3;
 use super::cut::{FORCED, min_cut_keep};
 use super::deform::{Constraint, deform};
 use super::faces::{Closest, ElementFaces, Faces};
-use super::give_way::{InTheWay, allowed_heights, give_way};
+use super::give_way::{allowed_heights, give_way};
 use super::self_crossing::crosses_itself;
 use super::stitch::stitch;
 use super::zones::{Zone, Zones, boxes_overlap};
@@ -243,11 +243,10 @@ pub(super) fn admit(
         if round == GIVE_WAY_ROUNDS || !thread {
             return None;
         }
-        let in_the_way: Vec<InTheWay> =
-            hits.iter().filter_map(|&k| Some(InTheWay { faces: output_faces.built(k)? })).collect();
+        let in_the_way: Vec<&Faces> = hits.iter().filter_map(|&k| output_faces.built(k)).collect();
+        let allowed_mm = *allowed_mm.get_or_insert_with(|| allowed_heights(&element, grid));
         // Only what merging may move moves: the rest of a long thread is
         // done.
-        let allowed_mm = *allowed_mm.get_or_insert_with(|| allowed_heights(&element, grid));
         element = give_way(&element, &in_the_way, grid, allowed_mm, |v| grid.near_footprint(v, WORK_CELLS))?;
         bent = true;
     }
