@@ -22,7 +22,7 @@ use std::path::PathBuf;
 use std::time::Instant;
 
 use tracery_core::control::Control;
-use tracery_core::curve::{Along, Curve};
+use tracery_core::curve::{Along, Curve, planar_topology};
 use tracery_core::export::region_to_svg;
 use tracery_core::geom::Region;
 use tracery_core::mesh::extrude;
@@ -210,9 +210,13 @@ fn run_one(
         .join("/");
     run.region = Some(synthesis.planar.region.clone());
     run.pieces = s.pieces.len();
-    let counted = (synthesis.topology.components as u32, synthesis.topology.holes as u32);
+    // Counted here again, apart from the pipeline's own count: the polygons
+    // merged by a union first. The pipeline's report must agree with it.
+    let topology = planar_topology(&synthesis.planar.region, &synthesis.curve);
+    let counted = (topology.components as u32, topology.holes as u32);
     let bodies = mesh.shell_count() as u32;
-    run.exact = counted == (s.components, s.holes)
+    run.exact = topology == synthesis.topology
+        && counted == (s.components, s.holes)
         && targets.0.accepts(counted.0)
         && targets.1.accepts(counted.1)
         && bodies == counted.0;

@@ -3,6 +3,8 @@
 use glam::DVec2;
 
 use super::Curve;
+use rayon::prelude::*;
+
 use crate::geom::{Polygon, Region, refine_mapped, union};
 use crate::report::Warning;
 
@@ -81,12 +83,14 @@ pub fn map_along(band_region: &Region, scale: f64, curve: &Curve) -> PlanarPatte
         }
         curve.map(u, p.y * scale * narrowing(u))
     };
-    let mut mapped = Vec::new();
     // Points are added where the curve bends an edge away from its chord.
+    // Rings are mapped on every core.
     let ring = |r: &Vec<DVec2>| refine_mapped(r, place, step / scale, MAPPING_TOLERANCE_MM);
-    for polygon in &band_region.polygons {
-        mapped.push(Polygon { outer: ring(&polygon.outer), holes: polygon.holes.iter().map(ring).collect() });
-    }
+    let mapped: Vec<Polygon> = band_region
+        .polygons
+        .par_iter()
+        .map(|polygon| Polygon { outer: ring(&polygon.outer), holes: polygon.holes.par_iter().map(ring).collect() })
+        .collect();
     let separate: f64 = mapped.iter().map(Polygon::area).sum();
     let region = union(&[&Region::new(mapped)]);
     if separate > 0.0 && (separate - region.area()) / separate > 1e-3 {

@@ -10,7 +10,23 @@ use crate::geom::{PatternTopology, Rect, Region, Topology, count_topology, ring_
 /// holes that contain a point well inside the loop (away from the band) are
 /// its central openings, not holes in the lace.
 pub fn planar_topology(region: &Region, curve: &Curve) -> PatternTopology {
-    let Topology { components, holes } = count_topology(region);
+    with_loop_openings(region, curve, count_topology(region))
+}
+
+/// [`planar_topology`] of a region that is already clean (polygons that
+/// neither overlap nor share an edge, as every boolean in [`crate::geom`]
+/// returns): components are its outer rings and holes its inner rings,
+/// without the polygon union that [`planar_topology`] runs first. That
+/// union is a third of the geometry stage on a dense loop (36 of 110 ms
+/// for 91 k vertices), and the pipeline's region has just come out of one.
+/// Tests count with [`planar_topology`], independently.
+pub fn planar_topology_of_clean(region: &Region, curve: &Curve) -> PatternTopology {
+    let counted = Topology { components: region.component_count(), holes: region.hole_count() };
+    with_loop_openings(region, curve, counted)
+}
+
+fn with_loop_openings(region: &Region, curve: &Curve, counted: Topology) -> PatternTopology {
+    let Topology { components, holes } = counted;
     let mut loop_openings = 0;
     if let Some(probe) = curve.is_closed().then(|| inner_probe(region, curve)).flatten() {
         loop_openings = region.polygons.iter().flat_map(|p| p.holes.iter()).filter(|h| ring_contains(h, probe)).count();

@@ -33,7 +33,7 @@ pub use disc::{arc_step, disc};
 pub use fill::fill_triangles;
 pub use offset::{OFFSET_ARC_TOLERANCE_MM, offset};
 pub use polygon::{Polygon, Region, ring_contains, ring_perimeter, signed_area};
-pub use polyline::refine_mapped;
+pub use polyline::{refine_mapped, refine_mapped_thinned};
 pub use rect::Rect;
 pub use resolution::{mean_width, without_slivers};
 pub use sanity::{MIN_RING_AREA, RegionDefect};

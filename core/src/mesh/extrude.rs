@@ -1,5 +1,6 @@
 //! Extrusion of a planar region into a closed, watertight solid.
 
+use rayon::prelude::*;
 use rustc_hash::FxHashMap;
 
 use spade::handles::FixedVertexHandle;
@@ -196,37 +197,24 @@ fn extrude_exactly(
     if rings.is_empty() {
         return Err(MeshError::Empty);
     }
-    let edges: Vec<[usize; 2]> =
-        rings.iter().flat_map(|r| (0..r.len()).map(move |k| [r[k], r[(k + 1) % r.len()]])).collect();
-    let mut conflicts = 0;
-    let cdt = ConstrainedDelaunayTriangulation::<Point2<f64>>::try_bulk_load_cdt(points.clone(), edges.clone(), |_| {
-        conflicts += 1
-    })
-    .map_err(|e| MeshError::Tessellation(format!("{e:?}")))?;
-    if conflicts > 0 || cdt.num_vertices() != points.len() {
-        return Err(MeshError::Tessellation("the outline crosses itself".into()));
-    }
-    for &[a, b] in &edges {
-        let (va, vb) = (FixedVertexHandle::from_index(a), FixedVertexHandle::from_index(b));
-        if cdt.get_edge_from_neighbors(va, vb).is_none() {
-            return Err(MeshError::Tessellation("a vertex lies on another ring's edge".into()));
-        }
-    }
     if let Some(edge_mm) = fine {
-        return Ok(refined(cdt, edge_mm));
+        let all: Vec<usize> = (0..rings.len()).collect();
+        return Ok(refined(constrained(&points, &rings, &all)?.0, edge_mm));
     }
-    // Crossing a ring edge toggles inside and outside.
-    let inside = crate::geom::faces_inside(&cdt);
+    // Rings whose bounding boxes are apart cannot cross or touch, so each
+    // group of overlapping ones is triangulated on its own, groups on every
+    // core; each group is checked for crossings exactly as the whole was.
+    let groups = overlapping_groups(&points, &rings);
+    let faces: Vec<Result<Vec<[u32; 3]>, MeshError>> =
+        groups.par_iter().map(|group| inside_faces(&points, &rings, group)).collect();
+    // The first group's error, whichever thread met it first.
+    let faces: Vec<Vec<[u32; 3]>> = faces.into_iter().collect::<Result<_, _>>()?;
     let count = points.len() as u32;
     let mut mesh = Mesh { vertices: Vec::with_capacity(2 * points.len()), triangles: Vec::new() };
     mesh.vertices.extend(points.iter().map(|p| [p.x, p.y, 0.0]));
     mesh.vertices.extend(points.iter().map(|p| [p.x, p.y, thickness_mm]));
-    for face in cdt.inner_faces() {
-        if inside[face.fix().index()] != Some(true) {
-            continue;
-        }
+    for [a, b, c] in faces.into_iter().flatten() {
         // Spade's faces run counter-clockwise: the top faces up.
-        let [a, b, c] = face.vertices().map(|v| v.fix().index() as u32);
         mesh.triangles.push([a + count, b + count, c + count]);
         mesh.triangles.push([a, c, b]);
     }
@@ -241,6 +229,102 @@ fn extrude_exactly(
         }
     }
     Ok(mesh)
+}
+
+/// The rings (indices into `rings`) in groups whose bounding boxes overlap,
+/// directly or through others; boxes that only touch overlap. Two rings in
+/// different groups are apart.
+fn overlapping_groups(points: &[Point2<f64>], rings: &[Vec<usize>]) -> Vec<Vec<usize>> {
+    let boxes: Vec<[f64; 4]> = rings
+        .iter()
+        .map(|ring| {
+            ring.iter().fold([f64::INFINITY, f64::INFINITY, f64::NEG_INFINITY, f64::NEG_INFINITY], |b, &i| {
+                let p = points[i];
+                [b[0].min(p.x), b[1].min(p.y), b[2].max(p.x), b[3].max(p.y)]
+            })
+        })
+        .collect();
+    let mut by_left: Vec<usize> = (0..rings.len()).collect();
+    by_left.sort_unstable_by(|&a, &b| boxes[a][0].total_cmp(&boxes[b][0]));
+    let mut sets = crate::disjoint_sets::DisjointSets::new(rings.len());
+    // A sweep along x: only boxes still open at a box's left edge can overlap it.
+    let mut open: Vec<usize> = Vec::new();
+    for &r in &by_left {
+        let [x0, y0, _, y1] = boxes[r];
+        open.retain(|&o| boxes[o][2] >= x0);
+        for &o in &open {
+            if boxes[o][1] <= y1 && y0 <= boxes[o][3] {
+                sets.join(o, r);
+            }
+        }
+        open.push(r);
+    }
+    let mut groups: Vec<Vec<usize>> = Vec::new();
+    let mut group_of: FxHashMap<usize, usize> = FxHashMap::default();
+    for r in 0..rings.len() {
+        let root = sets.find(r);
+        let g = *group_of.entry(root).or_insert_with(|| {
+            groups.push(Vec::new());
+            groups.len() - 1
+        });
+        groups[g].push(r);
+    }
+    groups
+}
+
+/// The constrained Delaunay triangulation of the rings in `group`, with,
+/// for each of its vertices, its index in `points`. An error where an
+/// outline crosses itself or another, or a vertex lies on another edge.
+fn constrained(
+    points: &[Point2<f64>],
+    rings: &[Vec<usize>],
+    group: &[usize],
+) -> Result<(ConstrainedDelaunayTriangulation<Point2<f64>>, Vec<usize>), MeshError> {
+    let mut local: FxHashMap<usize, usize> = FxHashMap::default();
+    let mut global: Vec<usize> = Vec::new();
+    let mut edges: Vec<[usize; 2]> = Vec::new();
+    for ring in group.iter().map(|&r| &rings[r]) {
+        let ids: Vec<usize> = ring
+            .iter()
+            .map(|&g| {
+                *local.entry(g).or_insert_with(|| {
+                    global.push(g);
+                    global.len() - 1
+                })
+            })
+            .collect();
+        edges.extend((0..ids.len()).map(|k| [ids[k], ids[(k + 1) % ids.len()]]));
+    }
+    let group_points: Vec<Point2<f64>> = global.iter().map(|&g| points[g]).collect();
+    let mut conflicts = 0;
+    let cdt =
+        ConstrainedDelaunayTriangulation::<Point2<f64>>::try_bulk_load_cdt(group_points.clone(), edges.clone(), |_| {
+            conflicts += 1
+        })
+        .map_err(|e| MeshError::Tessellation(format!("{e:?}")))?;
+    if conflicts > 0 || cdt.num_vertices() != group_points.len() {
+        return Err(MeshError::Tessellation("the outline crosses itself".into()));
+    }
+    for &[a, b] in &edges {
+        let (va, vb) = (FixedVertexHandle::from_index(a), FixedVertexHandle::from_index(b));
+        if cdt.get_edge_from_neighbors(va, vb).is_none() {
+            return Err(MeshError::Tessellation("a vertex lies on another ring's edge".into()));
+        }
+    }
+    Ok((cdt, global))
+}
+
+/// The triangles inside the rings of `group` (counter-clockwise, indices
+/// into `points`).
+fn inside_faces(points: &[Point2<f64>], rings: &[Vec<usize>], group: &[usize]) -> Result<Vec<[u32; 3]>, MeshError> {
+    let (cdt, global) = constrained(points, rings, group)?;
+    // Crossing a ring edge toggles inside and outside.
+    let inside = crate::geom::faces_inside(&cdt);
+    Ok(cdt
+        .inner_faces()
+        .filter(|face| inside[face.fix().index()] == Some(true))
+        .map(|face| face.vertices().map(|v| global[v.fix().index()] as u32))
+        .collect())
 }
 
 /// Triangles smaller than this are never refined, mm².

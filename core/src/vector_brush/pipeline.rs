@@ -10,7 +10,7 @@ use super::{
     SliceOptions, Solution, SolveError, SolveOptions, spread_offsets, stitch,
 };
 use crate::control::{Control, MaybeCancelled};
-use crate::curve::{Curve, CurveError, MAPPING_TOLERANCE_MM, PlanarPattern, map_along, planar_topology};
+use crate::curve::{Curve, CurveError, MAPPING_TOLERANCE_MM, PlanarPattern, map_along, planar_topology_of_clean};
 use crate::geom::{PatternTopology, count_topology, separate_touching, union, without_slivers};
 use crate::mesh::MeshError;
 use crate::report::{Timings, Warning};
@@ -251,7 +251,8 @@ pub(crate) fn laid_out(
             band.region = separate_touching(&band.region, RESOLUTION_MM / scale);
             let mut planar = map_along(&band.region, scale, curve);
             planar.region = without_slivers(&planar.region, RESOLUTION_MM);
-            let topology = planar_topology(&planar.region, curve);
+            // Straight from the union in `map_along`, less slivers: clean.
+            let topology = planar_topology_of_clean(&planar.region, curve);
             (band, planar, topology)
         });
 

@@ -22,7 +22,9 @@ use glam::DVec2;
 use serde::{Deserialize, Serialize};
 
 use super::{CurveKind, PieceSet};
-use crate::geom::{Polygon, Region, refine_mapped, union};
+use rayon::prelude::*;
+
+use crate::geom::{Polygon, Region, refine_mapped_thinned, union};
 
 /// A synthesized pattern in band space: `u` from 0 to the curve length,
 /// `v` across the band, in exemplar units.
@@ -265,8 +267,8 @@ pub fn stitch(
         CurveKind::Open => k > 0 && k < n && joined(k).is_none(),
         CurveKind::Closed => joined(if k == 0 { n } else { k }).is_none(),
     };
-    let mut polygons = Vec::new();
-    for (i, piece) in pieces.iter().enumerate() {
+    // Each piece is deformed on its own, so pieces go to every core.
+    let deformed = |(i, piece): (usize, &&super::Piece)| -> Vec<Polygon> {
         let (x_min, x_max) = piece.region.bounds().map_or((f64::INFINITY, f64::NEG_INFINITY), |b| (b.min.x, b.max.x));
         let left_gap = if is_break(i) { (0.5 * gap - (x_min - piece.u_start)).max(0.0) } else { 0.0 };
         let right_gap = if is_break(i + 1) { (0.5 * gap - (piece.u_end() - x_max)).max(0.0) } else { 0.0 };
@@ -335,11 +337,15 @@ pub fn stitch(
             }
             DVec2::new(u, v)
         };
-        for polygon in &piece.region.polygons {
-            let deform = |ring: &Vec<DVec2>| refine_mapped(ring, place, max_step, tolerance);
-            polygons.push(Polygon { outer: deform(&polygon.outer), holes: polygon.holes.iter().map(deform).collect() });
-        }
-    }
+        let deform = |ring: &Vec<DVec2>| refine_mapped_thinned(ring, place, max_step, tolerance, 0.5 * tolerance);
+        piece
+            .region
+            .polygons
+            .iter()
+            .map(|polygon| Polygon { outer: deform(&polygon.outer), holes: polygon.holes.iter().map(deform).collect() })
+            .collect()
+    };
+    let polygons: Vec<Polygon> = pieces.par_iter().enumerate().flat_map_iter(deformed).collect();
     let region = union(&[&Region::new(polygons)]);
     let seams = seam_u[1..n].to_vec();
     BandPattern { region, length, seams, curve }

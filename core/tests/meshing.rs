@@ -1,0 +1,64 @@
+//! Extrusion of regions whose parts lie apart, side by side with
+//! overlapping bounds, and nested in each other's holes: one sound body per
+//! part and exactly the region's volume, whichever parts are meshed
+//! together.
+
+use tracery_core::DVec2;
+use tracery_core::geom::{Polygon, Region};
+use tracery_core::mesh::extrude;
+
+fn square(x: f64, y: f64, side: f64) -> Vec<DVec2> {
+    vec![DVec2::new(x, y), DVec2::new(x + side, y), DVec2::new(x + side, y + side), DVec2::new(x, y + side)]
+}
+
+fn frame(x: f64, y: f64, side: f64, wall: f64) -> Polygon {
+    let mut hole = square(x + wall, y + wall, side - 2.0 * wall);
+    hole.reverse();
+    Polygon { outer: square(x, y, side), holes: vec![hole] }
+}
+
+/// An L whose bounding box holds a square that does not touch it.
+fn ell(x: f64, y: f64) -> Polygon {
+    let outer = [(0.0, 0.0), (10.0, 0.0), (10.0, 2.0), (2.0, 2.0), (2.0, 10.0), (0.0, 10.0)];
+    Polygon { outer: outer.iter().map(|&(a, b)| DVec2::new(x + a, y + b)).collect(), holes: vec![] }
+}
+
+#[test]
+fn parts_apart_overlapping_in_bounds_and_nested_each_make_one_sound_body() {
+    let region = Region::new(vec![
+        // Apart from everything.
+        Polygon { outer: square(100.0, 0.0, 5.0), holes: vec![] },
+        // An L and a square within its bounds, not touching it.
+        ell(0.0, 0.0),
+        Polygon { outer: square(5.0, 5.0, 3.0), holes: vec![] },
+        // A frame with an island in its opening.
+        frame(40.0, 0.0, 20.0, 2.0),
+        Polygon { outer: square(45.0, 5.0, 10.0), holes: vec![] },
+        // Two Ls hooked into each other's bounds, not touching.
+        ell(70.0, 0.0),
+        Polygon { outer: ell(0.0, 0.0).outer.iter().map(|p| DVec2::new(83.0, 10.0) - *p).collect(), holes: vec![] },
+    ]);
+    assert_eq!(region.component_count(), 7);
+    assert_eq!(tracery_core::geom::count_topology(&region).components, 7, "the parts do not touch");
+    let thickness_mm = 1.5;
+    let mesh = extrude(&region, thickness_mm).unwrap();
+    mesh.sanity_check().unwrap();
+    assert_eq!(mesh.shell_count(), 7);
+    let expected = region.area() * thickness_mm;
+    assert!((mesh.signed_volume() - expected).abs() < 1e-9 * expected, "{} against {expected}", mesh.signed_volume());
+}
+
+#[test]
+fn rings_that_cross_in_one_group_are_still_refused_or_repaired() {
+    // Two squares overlapping (not a clean region): meshed as given they
+    // would cross; the repair merges them into one body.
+    let region = Region::new(vec![
+        Polygon { outer: square(0.0, 0.0, 4.0), holes: vec![] },
+        Polygon { outer: square(2.0, 2.0, 4.0), holes: vec![] },
+        Polygon { outer: square(20.0, 0.0, 4.0), holes: vec![] },
+    ]);
+    let mesh = extrude(&region, 1.0).unwrap();
+    mesh.sanity_check().unwrap();
+    assert_eq!(mesh.shell_count(), 2);
+    assert!((mesh.signed_volume() - (16.0 + 16.0 - 4.0 + 16.0)).abs() < 1e-6);
+}
