@@ -30,6 +30,8 @@ impl Search<'_> {
 pub(super) struct CompletionBound {
     pieces: usize,
     quantum: f64,
+    /// The last row of `lower`: finishes needing that many quanta or more.
+    last_k: usize,
     /// The shortest accepted length, exemplar units.
     min_length: f64,
     /// `lower[k·pieces + a]`: the least cost of following piece `a` with
@@ -95,16 +97,20 @@ impl CompletionBound {
                 lower[k * n + a] = least;
             }
         }
-        CompletionBound { pieces: n, quantum, min_length, lower }
+        let last_k = lower.len() / n.max(1) - 1;
+        CompletionBound { pieces: n, quantum, last_k, min_length, lower }
     }
 
     /// The least that finishing costs after `piece`, at `length` so far
     /// (exemplar units).
     #[inline]
     pub(super) fn after(&self, piece: usize, length: f64) -> f64 {
+        // Called for every state and follower: the row count is kept, not
+        // divided out. (The length is divided, not multiplied by an
+        // inverse, which could round a whole number of quanta up by one
+        // and the bound with it.)
         let needed = ((self.min_length - length) / self.quantum).floor().max(0.0) as usize;
-        let k = needed.min(self.lower.len() / self.pieces - 1);
-        self.lower[k * self.pieces + piece]
+        self.lower[needed.min(self.last_k) * self.pieces + piece]
     }
 }
 
