@@ -115,19 +115,42 @@ pub fn check(region: &Region, seams_mm: &[[DVec2; 2]], settings: &PrintSettings,
 /// Narrow places whose discs lie within `width` of each other are one flaw.
 fn group(places: Vec<Narrow>, width: f64) -> Vec<Flaw> {
     let mut sets = crate::disjoint_sets::DisjointSets::new(places.len());
-    let cell_of = |p: DVec2| ((p.x / width).floor() as i64, (p.y / width).floor() as i64);
+    // Cells half a width wide: any two discs in one cell are within a width
+    // of each other, so a cell's discs are joined at once, and a disc's
+    // neighbours within a width lie in the 5 × 5 cells around its own. Two
+    // cells are compared disc by disc only until a pair within a width
+    // joins them, and not at all once they are joined. (Comparing every
+    // pair within 3 × 3 cells of a width took a dense loop's check
+    // quadratic: 100 of its 400 ms.)
+    let cell = 0.5 * width;
+    let cell_of = |p: DVec2| ((p.x / cell).floor() as i64, (p.y / cell).floor() as i64);
     let mut grid: FxHashMap<(i64, i64), Vec<usize>> = FxHashMap::default();
     for (i, p) in places.iter().enumerate() {
         grid.entry(cell_of(p.centre_mm)).or_default().push(i);
     }
-    for (i, p) in places.iter().enumerate() {
-        let (cx, cy) = cell_of(p.centre_mm);
-        for x in cx - 1..=cx + 1 {
-            for y in cy - 1..=cy + 1 {
-                for &j in grid.get(&(x, y)).into_iter().flatten() {
-                    if j > i && places[j].centre_mm.distance(p.centre_mm) <= width {
-                        sets.join(i, j);
-                    }
+    for members in grid.values() {
+        for &j in &members[1..] {
+            sets.join(members[0], j);
+        }
+    }
+    let mut cells: Vec<(&(i64, i64), &Vec<usize>)> = grid.iter().collect();
+    cells.sort_unstable_by_key(|(key, _)| **key);
+    for &(&(cx, cy), members) in &cells {
+        for x in cx - 2..=cx + 2 {
+            for y in cy - 2..=cy + 2 {
+                // Each pair of cells once.
+                if (x, y) <= (cx, cy) {
+                    continue;
+                }
+                let Some(others) = grid.get(&(x, y)) else { continue };
+                if sets.find(members[0]) == sets.find(others[0]) {
+                    continue;
+                }
+                let near = members
+                    .iter()
+                    .any(|&i| others.iter().any(|&j| places[j].centre_mm.distance(places[i].centre_mm) <= width));
+                if near {
+                    sets.join(members[0], others[0]);
                 }
             }
         }
