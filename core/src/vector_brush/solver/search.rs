@@ -7,13 +7,14 @@ use std::sync::atomic::{AtomicBool, AtomicUsize, Ordering};
 use rayon::prelude::*;
 
 mod bound;
+mod cap;
 mod narrowing;
 
 use bound::CompletionBound;
 
 use super::state::{Bucket, Interner, LengthGrid, NO_PARENT, PRUNED, State, Trace, UNKNOWN};
-use super::{BAND_MARGIN, CurveKind, STATE_BYTES, Solution, SolveOptions, tolerance_levels};
-use crate::control::{Control, StateCap};
+use super::{BAND_MARGIN, CurveKind, Solution, SolveOptions, tolerance_levels};
+use crate::control::Control;
 use crate::random::splitmix64;
 use crate::vector_brush::{Autocorrelation, MATCH_WEIGHT, PieceSet, Similarity, SolveError};
 
@@ -143,11 +144,6 @@ impl Problem<'_> {
     }
 }
 
-/// States a search takes from the cap at a time: while the parallel
-/// searches each hold up to this many unused, the cap may be met that many
-/// states early (a few thousand of its two million).
-const RESERVE: usize = 1024;
-
 /// The table of one search: open states grouped by length, expanded ones
 /// in an arena of traces.
 pub(super) struct Search<'p> {
@@ -246,24 +242,6 @@ impl<'p> Search<'p> {
         self.counted += 1;
         self.buckets[slot].insert(key, state, variety.then(correlation));
         Ok(())
-    }
-
-    /// Takes states from the cap's count shared by the parallel searches:
-    /// [`RESERVE`] at a time while they fit, then one at a time. One shared
-    /// counter touched for every state was a tenth of a loop's search time,
-    /// the two cores taking its cache line from each other.
-    fn reserve(&mut self) -> Result<(), SolveError> {
-        let problem = self.problem;
-        let max = problem.options.max_states;
-        for batch in [RESERVE, 1] {
-            if problem.states.fetch_add(batch, Ordering::Relaxed) + batch <= max {
-                self.reserved = batch;
-                return Ok(());
-            }
-            problem.states.fetch_sub(batch, Ordering::Relaxed);
-        }
-        let cap = StateCap { max_states: max, bytes_per_state: STATE_BYTES };
-        Err(SolveError::TooManyStates { limit: cap.max_states, megabytes: cap.megabytes() })
     }
 
     fn run(&mut self) -> Result<(), SolveError> {
