@@ -254,13 +254,13 @@ pub fn solve(set: &PieceSet, options: &SolveOptions, control: &Control) -> Resul
         }
         _ => options,
     };
-    let mut found = match search_all(search_set, options, false, control) {
+    let mut found = match search_all(search_set, options, Goal::Best, control) {
         Err(SolveError::TooManyStates { .. }) if !options.prefix.is_empty() => None,
         other => other.or_else(|e| bounded_retry(search_set, options, e, control))?,
     };
     if found.is_none() && !options.prefix.is_empty() {
         let fresh = SolveOptions { prefix: Vec::new(), ..options.clone() };
-        found = search_all(search_set, &fresh, false, control)
+        found = search_all(search_set, &fresh, Goal::Best, control)
             .or_else(|e| bounded_retry(search_set, &fresh, e, control))?;
     }
     match found {
@@ -288,10 +288,24 @@ fn bounded_retry(
     if !matches!(error, SolveError::TooManyStates { .. }) {
         return Err(error);
     }
-    match search_all(set, options, true, control)? {
+    match search_all(set, options, Goal::Bounded, control)? {
         Some(solution) => Ok(Some(solution)),
         None => Err(error),
     }
+}
+
+/// What a search is for.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(super) enum Goal {
+    /// The cheapest pattern.
+    Best,
+    /// The cheapest pattern of a search that keeps only the cheapest
+    /// states of each length, within the cap.
+    Bounded,
+    /// Any pattern, to tell whether there is one: the diagnosis of targets
+    /// that cannot be met. Stopping at the first made a refusal's
+    /// diagnosis 100 → a few ms where the relaxed targets can be met.
+    Any,
 }
 
 fn validate(set: &PieceSet, options: &SolveOptions) -> Result<(), SolveError> {

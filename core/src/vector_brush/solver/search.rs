@@ -13,7 +13,7 @@ mod narrowing;
 use bound::CompletionBound;
 
 use super::state::{Bucket, Interner, LengthGrid, NO_PARENT, PRUNED, State, Trace, UNKNOWN};
-use super::{BAND_MARGIN, CurveKind, Solution, SolveOptions, tolerance_levels};
+use super::{BAND_MARGIN, CurveKind, Goal, Solution, SolveOptions, tolerance_levels};
 use crate::control::Control;
 use crate::random::splitmix64;
 use crate::vector_brush::{Autocorrelation, MATCH_WEIGHT, PieceSet, Similarity, SolveError};
@@ -48,6 +48,10 @@ pub(super) struct Problem<'a> {
     /// cheapest), and `bounded` records that some were dropped.
     beam: Option<usize>,
     bounded: &'a AtomicBool,
+    /// Whether any pattern will do ([`Goal::Any`]): every search stops
+    /// once one of them has found one.
+    stop_at_first: bool,
+    found_any: &'a AtomicBool,
     states: &'a AtomicUsize,
     created: &'a AtomicUsize,
     work_done: &'a AtomicUsize,
@@ -264,6 +268,9 @@ impl<'p> Search<'p> {
         }
         let (mut open, mut autos): (Vec<State>, Vec<Autocorrelation>) = (Vec::new(), Vec::new());
         for key in first_key..=max_key {
+            if problem.stop_at_first && problem.found_any.load(Ordering::Relaxed) {
+                break;
+            }
             problem.control.check()?;
             problem.report_progress();
             let slot = key as usize % self.buckets.len();
@@ -349,6 +356,7 @@ impl<'p> Search<'p> {
         }
         if self.best.is_none_or(|(b, _)| total < b) {
             self.best = Some((total, index));
+            problem.found_any.store(true, Ordering::Relaxed);
         }
     }
 
@@ -415,9 +423,10 @@ const LENGTH_SLACK: f64 = 1e-9;
 pub(super) fn search_all(
     set: &PieceSet,
     options: &SolveOptions,
-    bounded_search: bool,
+    goal: Goal,
     control: &Control,
 ) -> Result<Option<Solution>, SolveError> {
+    let bounded_search = goal == Goal::Bounded;
     let n = set.len();
     let grid = LengthGrid::new(set, options);
     let steps: Vec<u32> = set.pieces.iter().map(|p| grid.steps(p.width)).collect();
@@ -454,6 +463,7 @@ pub(super) fn search_all(
     }
     let states = AtomicUsize::new(0);
     let bounded = AtomicBool::new(false);
+    let found_any = AtomicBool::new(false);
     let created = AtomicUsize::new(0);
     let work_done = AtomicUsize::new(0);
     let tolerances = tolerance_levels(options);
@@ -497,6 +507,8 @@ pub(super) fn search_all(
         similarity: Similarity::new(options.autocorrelation_sigma),
         beam: None,
         bounded: &bounded,
+        stop_at_first: goal == Goal::Any,
+        found_any: &found_any,
         states: &states,
         created: &created,
         work_done: &work_done,
