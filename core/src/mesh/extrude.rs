@@ -7,7 +7,7 @@ use spade::handles::FixedVertexHandle;
 use spade::{ConstrainedDelaunayTriangulation, Point2, Triangulation};
 
 use super::Mesh;
-use crate::geom::Region;
+use crate::geom::{Rect, Region};
 
 /// How far apart parts that touch at a single point are moved, in mm.
 const TOUCH_GAP_MM: f64 = 1e-3;
@@ -235,25 +235,22 @@ fn extrude_exactly(
 /// directly or through others; boxes that only touch overlap. Two rings in
 /// different groups are apart.
 fn overlapping_groups(points: &[Point2<f64>], rings: &[Vec<usize>]) -> Vec<Vec<usize>> {
-    let boxes: Vec<[f64; 4]> = rings
+    let boxes: Vec<Rect> = rings
         .iter()
         .map(|ring| {
-            ring.iter().fold([f64::INFINITY, f64::INFINITY, f64::NEG_INFINITY, f64::NEG_INFINITY], |b, &i| {
-                let p = points[i];
-                [b[0].min(p.x), b[1].min(p.y), b[2].max(p.x), b[3].max(p.y)]
-            })
+            Rect::from_points(ring.iter().map(|&i| glam::DVec2::new(points[i].x, points[i].y)))
+                .expect("a ring has at least three points")
         })
         .collect();
     let mut by_left: Vec<usize> = (0..rings.len()).collect();
-    by_left.sort_unstable_by(|&a, &b| boxes[a][0].total_cmp(&boxes[b][0]));
+    by_left.sort_unstable_by(|&a, &b| boxes[a].min.x.total_cmp(&boxes[b].min.x));
     let mut sets = crate::disjoint_sets::DisjointSets::new(rings.len());
     // A sweep along x: only boxes still open at a box's left edge can overlap it.
     let mut open: Vec<usize> = Vec::new();
     for &r in &by_left {
-        let [x0, y0, _, y1] = boxes[r];
-        open.retain(|&o| boxes[o][2] >= x0);
+        open.retain(|&o| boxes[o].max.x >= boxes[r].min.x);
         for &o in &open {
-            if boxes[o][1] <= y1 && y0 <= boxes[o][3] {
+            if boxes[o].overlaps(&boxes[r]) {
                 sets.join(o, r);
             }
         }
@@ -297,12 +294,11 @@ fn constrained(
     }
     let group_points: Vec<Point2<f64>> = global.iter().map(|&g| points[g]).collect();
     let mut conflicts = 0;
-    let cdt =
-        ConstrainedDelaunayTriangulation::<Point2<f64>>::try_bulk_load_cdt(group_points.clone(), edges.clone(), |_| {
-            conflicts += 1
-        })
-        .map_err(|e| MeshError::Tessellation(format!("{e:?}")))?;
-    if conflicts > 0 || cdt.num_vertices() != group_points.len() {
+    let cdt = ConstrainedDelaunayTriangulation::<Point2<f64>>::try_bulk_load_cdt(group_points, edges.clone(), |_| {
+        conflicts += 1
+    })
+    .map_err(|e| MeshError::Tessellation(format!("{e:?}")))?;
+    if conflicts > 0 || cdt.num_vertices() != global.len() {
         return Err(MeshError::Tessellation("the outline crosses itself".into()));
     }
     for &[a, b] in &edges {
