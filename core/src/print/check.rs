@@ -133,9 +133,9 @@ fn group(places: Vec<Narrow>, width: f64) -> Vec<Flaw> {
             sets.join(members[0], j);
         }
     }
-    let mut cells: Vec<(&(i64, i64), &Vec<usize>)> = grid.iter().collect();
-    cells.sort_unstable_by_key(|(key, _)| **key);
-    for &(&(cx, cy), members) in &cells {
+    // In any order: the sets joined, and their representatives (the least
+    // index), do not depend on it.
+    for (&(cx, cy), members) in &grid {
         for x in cx - 2..=cx + 2 {
             for y in cy - 2..=cy + 2 {
                 // Each pair of cells once.

@@ -51,11 +51,11 @@ mod tests {
             let control = Control::default();
             let best = search_all(&set, &options, Goal::Best, &control).unwrap().expect("a pattern");
             let any = search_all(&set, &options, Goal::Any, &control).unwrap().expect("a pattern too");
-            // A pattern. On a loop, whose searches
-            // (one per start piece) stop as soon as one has found a pattern,
-            // with a fraction of the states; on an open curve the first
-            // pattern comes at the shortest accepted length, late in the
-            // search, so little is saved there.
+            // A pattern all the same. On a loop, whose searches (one per
+            // start piece) stop as soon as one has found a pattern, with a
+            // fraction of the states; on an open curve the first pattern
+            // comes at the shortest accepted length, late in the search, so
+            // little is saved there.
             let fraction = if curve == CurveKind::Closed { 0.5 } else { 1.0 };
             assert!(
                 any.states as f64 <= fraction * best.states as f64,
