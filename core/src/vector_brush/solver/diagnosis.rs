@@ -11,12 +11,16 @@ use crate::vector_brush::{PieceSet, SolveError, Unmet};
 pub(super) fn diagnose(set: &PieceSet, options: &SolveOptions, control: &Control) -> Result<Unmet, SolveError> {
     let feasible = |components: Target, holes: Target, closed_pattern: bool| -> Result<bool, SolveError> {
         let relaxed = SolveOptions { components, holes, closed_pattern, variety: 0.0, seed: 0, ..options.clone() };
-        Ok(search_all(set, &relaxed, Goal::Any, &control.silent())?.is_some())
+        exists(set, &relaxed, control)
     };
     if options.band_height.is_finite() {
         let unbounded = SolveOptions { band_height: f64::INFINITY, ..options.clone() };
-        if search_all(set, &unbounded, Goal::Any, &control.silent())?.is_some() {
-            return Ok(Unmet::Band);
+        match exists(set, &unbounded, control) {
+            Ok(true) => return Ok(Unmet::Band),
+            // Undecided within the cap: the band is not named, and the
+            // checks below need no answer from this one.
+            Ok(false) | Err(SolveError::TooManyStates { .. }) => {}
+            Err(e) => return Err(e),
         }
     }
     if !feasible(Target::Any, Target::Any, false)? {
@@ -35,6 +39,25 @@ pub(super) fn diagnose(set: &PieceSet, options: &SolveOptions, control: &Control
         return Ok(Unmet::Holes(options.holes));
     }
     Ok(Unmet::Combination { components: options.components, holes: options.holes })
+}
+
+/// Whether some pattern meets `options`. Where the exhaustive search
+/// needs more than the state cap, a pattern found by a bounded search is
+/// proof enough that one exists (vectorian93 along a line with one
+/// component: the targets relaxed to any number of parts need 1.3 M
+/// states); only where that finds none too does the cap stand.
+fn exists(set: &PieceSet, options: &SolveOptions, control: &Control) -> Result<bool, SolveError> {
+    let control = control.silent();
+    match search_all(set, options, Goal::Any, &control) {
+        Err(cap @ SolveError::TooManyStates { .. }) => {
+            if search_all(set, options, Goal::Bounded, &control)?.is_some() {
+                Ok(true)
+            } else {
+                Err(cap)
+            }
+        }
+        other => Ok(other?.is_some()),
+    }
 }
 
 #[cfg(test)]
@@ -65,5 +88,32 @@ mod tests {
             );
             assert!(any.pieces.len() > 1);
         }
+    }
+
+    #[test]
+    fn a_refusal_is_explained_when_only_a_bounded_search_finds_the_relaxed_pattern() {
+        // Three parts without holes cannot be made from lace; three parts
+        // with holes can. The state cap is set a little below what the
+        // exhaustive search for "three parts, any holes" needs, so only a
+        // pattern found by the bounded search can show that relaxing the
+        // holes works.
+        let set = PieceSet::new(&builtin("lace").unwrap(), &SliceOptions::default()).unwrap();
+        let mut options = SolveOptions::new(6.0 * set.exemplar_width);
+        options.components = Target::Exactly(3);
+        options.holes = Target::Exactly(0);
+        let control = Control::default();
+        let relaxed = SolveOptions { holes: Target::Any, variety: 0.0, seed: 0, ..options.clone() };
+        let needed = search_all(&set, &relaxed, Goal::Any, &control).unwrap().expect("three parts with holes").states;
+        options.max_states = needed * 9 / 10;
+        let capped = SolveOptions { max_states: needed * 9 / 10, ..relaxed };
+        assert!(
+            matches!(search_all(&set, &capped, Goal::Any, &control), Err(SolveError::TooManyStates { .. })),
+            "the exhaustive search for the relaxed targets must pass the cap"
+        );
+        assert!(search_all(&set, &options, Goal::Best, &control).unwrap().is_none(), "no pattern, within the cap");
+        assert_eq!(
+            diagnose(&set, &options, &control).unwrap(),
+            Unmet::Combination { components: Target::Exactly(3), holes: Target::Exactly(0) }
+        );
     }
 }
