@@ -3,7 +3,7 @@
 
 use super::Goal;
 use super::search::search_all;
-use super::{CurveKind, SolveOptions, Target};
+use super::{CurveKind, SolveOptions, Target, bounded_retry};
 use crate::control::Control;
 use crate::vector_brush::{PieceSet, SolveError, Unmet};
 
@@ -48,16 +48,8 @@ pub(super) fn diagnose(set: &PieceSet, options: &SolveOptions, control: &Control
 /// states); only where that finds none too does the cap stand.
 fn exists(set: &PieceSet, options: &SolveOptions, control: &Control) -> Result<bool, SolveError> {
     let control = control.silent();
-    match search_all(set, options, Goal::Any, &control) {
-        Err(cap @ SolveError::TooManyStates { .. }) => {
-            if search_all(set, options, Goal::Bounded, &control)?.is_some() {
-                Ok(true)
-            } else {
-                Err(cap)
-            }
-        }
-        other => Ok(other?.is_some()),
-    }
+    let found = search_all(set, options, Goal::Any, &control).or_else(|e| bounded_retry(set, options, e, &control))?;
+    Ok(found.is_some())
 }
 
 #[cfg(test)]
@@ -105,7 +97,7 @@ mod tests {
         let relaxed = SolveOptions { holes: Target::Any, variety: 0.0, seed: 0, ..options.clone() };
         let needed = search_all(&set, &relaxed, Goal::Any, &control).unwrap().expect("three parts with holes").states;
         options.max_states = needed * 9 / 10;
-        let capped = SolveOptions { max_states: needed * 9 / 10, ..relaxed };
+        let capped = SolveOptions { max_states: options.max_states, ..relaxed };
         assert!(
             matches!(search_all(&set, &capped, Goal::Any, &control), Err(SolveError::TooManyStates { .. })),
             "the exhaustive search for the relaxed targets must pass the cap"

@@ -279,7 +279,7 @@ pub fn solve(set: &PieceSet, options: &SolveOptions, control: &Control) -> Resul
 /// Where the exact search needs more states than the cap, a bounded one
 /// (the cheapest states of each length) looks for a pattern that meets every
 /// target. Finding none proves nothing, so the cap error stands then.
-fn bounded_retry(
+pub(super) fn bounded_retry(
     set: &PieceSet,
     options: &SolveOptions,
     error: SolveError,
