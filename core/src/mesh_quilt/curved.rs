@@ -142,6 +142,9 @@ pub fn quilt_surface(
         )));
     }
     let size = swatch.size_mm();
+    // Rows can follow a circle round the axis about as tight as the swatch
+    // is wide; across a cap they lie straight (see `with_straight_caps`).
+    let field = &field.clone().with_straight_caps(surface, size.x.hypot(size.y));
     let triangles = surface.triangles();
     let area_mm2: f64 = triangles.iter().map(|t| triangle_area_3d(t.map(|v| surface.positions()[v as usize]))).sum();
     let estimate = (swatch.triangle_count() as f64 * area_mm2 / (size.x * size.y)) as usize;
@@ -293,7 +296,15 @@ fn grow_patch(
 ) -> Option<Patch> {
     let mut radius = radius_mm;
     for _ in 0..PATCH_TRIES {
-        let faces: Vec<u32> = graph.within(&[seed], radius).into_iter().map(|(f, _)| f).collect();
+        // A patch keeps to its side of a straight cap's rim: the field jumps
+        // there, and a swatch laid across it would run the wrong way on the
+        // far side (see `GuidanceField::with_straight_caps`).
+        let faces: Vec<u32> = graph
+            .within(&[seed], radius)
+            .into_iter()
+            .map(|(f, _)| f)
+            .filter(|&f| field.on_cap(f) == field.on_cap(seed))
+            .collect();
         if let Ok(patch) = Patch::lay_flat(surface, faces, seed, field, seed_uv) {
             report.max_patch_distortion = report.max_patch_distortion.max(patch.distortion);
             return Some(patch);

@@ -14,6 +14,14 @@ use crate::surface::SurfaceMesh;
 /// while a neighbour a hair away blends in others.
 const NEAR_FRACTION: f64 = 0.02;
 
+/// A straight cap takes in faces facing within this many degrees of the
+/// axis (see [`GuidanceField::with_straight_caps`]).
+pub const CAP_FACING_DEG: f64 = 30.0;
+
+/// A straight cap grows across edges whose faces' normals differ by less
+/// than this many degrees, and so stops at a crease such as a flat top's rim.
+pub const CAP_SMOOTH_DEG: f64 = 15.0;
+
 /// The most stroke points a field may have: each face weighs every segment.
 pub const MAX_FIELD_POINTS: usize = 20_000;
 
@@ -21,6 +29,11 @@ pub const MAX_FIELD_POINTS: usize = 20_000;
 #[derive(Clone, Debug, PartialEq)]
 pub struct GuidanceField {
     directions: Vec<DVec3>,
+    /// Made round or up the `z` axis (not from strokes): singular where a
+    /// face looks along the axis, see [`GuidanceField::with_straight_caps`].
+    about_axis: bool,
+    /// Faces on a straight cap (empty when there is none).
+    caps: Vec<bool>,
 }
 
 /// `v` in the plane of face `f`, unit length; any tangent where that vanishes.
@@ -36,7 +49,7 @@ impl GuidanceField {
         let directions = (0..surface.triangles().len() as u32)
             .map(|f| tangent(surface, f, DVec3::Z.cross(surface.point(f, [1.0 / 3.0; 3]))))
             .collect();
-        GuidanceField { directions }
+        GuidanceField { directions, about_axis: true, caps: Vec::new() }
     }
 
     /// Up the model (the `z` axis), in each face's plane: meridians on a
@@ -52,7 +65,7 @@ impl GuidanceField {
     /// ```
     pub fn along_axis(surface: &SurfaceMesh) -> Self {
         let directions = (0..surface.triangles().len() as u32).map(|f| tangent(surface, f, DVec3::Z)).collect();
-        GuidanceField { directions }
+        GuidanceField { directions, about_axis: true, caps: Vec::new() }
     }
 
     /// The field `direction` names; `strokes_mm` are the strokes
@@ -136,7 +149,119 @@ impl GuidanceField {
                 tangent(surface, f, blended)
             })
             .collect();
-        Ok(GuidanceField { directions })
+        Ok(GuidanceField { directions, about_axis: false, caps: Vec::new() })
+    }
+
+    /// This field with the caps round the axis made straight. A cap grows
+    /// from the faces where the circle round the `z` axis turns tighter
+    /// than `turn_radius_mm` within the surface (its geodesic curvature,
+    /// `|n_z| / r` for a face at distance `r` from the axis with normal `n`,
+    /// is over `1 / turn_radius_mm`) to the faces joined to them across
+    /// smooth edges (normals within [`CAP_SMOOTH_DEG`]) that still face
+    /// along the axis (within [`CAP_FACING_DEG`]). A cap whose edge is a
+    /// crease all round (a flat top's rim) and that is at least
+    /// `turn_radius_mm` across is kept, and its faces take the `x` axis
+    /// instead.
+    ///
+    /// Why: round a pole or across a flat top the circles shrink to a point,
+    /// and the swatch's straight rows cannot follow circles much tighter than
+    /// the swatch is wide; a weave there came out curled and tangled. The
+    /// rows across such a cap now lie straight, as on a plane. A straight
+    /// cap cannot meet rows going round without a seam (a field round a
+    /// disk's edge turns once), so the cap reaches out to a crease, the rim
+    /// of a flat top, and hides the seam there. Round a smooth pole (a
+    /// sphere's) no crease hides it, and the field is left round.
+    /// Fields drawn from strokes are left as they are: they say what the
+    /// person wants.
+    ///
+    /// ```
+    /// use tracery_core::mesh_quilt::GuidanceField;
+    /// use tracery_core::surface::{SurfaceMesh, builtin_base};
+    /// let cylinder = SurfaceMesh::new(builtin_base("cylinder").unwrap()).unwrap();
+    /// let field = GuidanceField::around_axis(&cylinder).with_straight_caps(&cylinder, 20.0);
+    /// // On the top 10 mm from the axis, the circle (1/10 mm⁻¹) turns too
+    /// // tightly: the row runs along x, not round (along y there).
+    /// let middle = cylinder.closest_point([10.0, 0.0, 60.0]).face;
+    /// assert!(field.direction(middle).x.abs() > 0.99);
+    /// // 24 mm out the circle turns gently, but the top is one flat cap.
+    /// let edge = cylinder.closest_point([24.0, 0.0, 60.0]).face;
+    /// assert!(field.direction(edge).x.abs() > 0.99);
+    /// // Past the rim, the side still goes round.
+    /// let side = cylinder.closest_point([25.0, 0.0, 59.0]).face;
+    /// assert!(field.direction(side).y.abs() > 0.99);
+    /// // A sphere's pole has no crease round it: the rows still go round.
+    /// let sphere = SurfaceMesh::new(builtin_base("sphere").unwrap()).unwrap();
+    /// let near_pole = sphere.closest_point([3.0, 0.0, 60.0]).face;
+    /// let field = GuidanceField::around_axis(&sphere).with_straight_caps(&sphere, 20.0);
+    /// assert!(!field.on_cap(near_pole) && field.direction(near_pole).y.abs() > 0.9);
+    /// ```
+    pub fn with_straight_caps(mut self, surface: &SurfaceMesh, turn_radius_mm: f64) -> Self {
+        let triangles = surface.triangles();
+        if !self.about_axis || self.directions.len() != triangles.len() {
+            return self;
+        }
+        let (facing, smooth) = (CAP_FACING_DEG.to_radians().cos(), CAP_SMOOTH_DEG.to_radians().cos());
+        let tight = |f: u32| {
+            let centre = surface.point(f, [1.0 / 3.0; 3]);
+            surface.face_normal(f).z.abs() * turn_radius_mm > centre.truncate().length()
+        };
+        let mut cap = vec![false; triangles.len()];
+        let mut seen = vec![false; triangles.len()];
+        for start in 0..triangles.len() as u32 {
+            if seen[start as usize] || !tight(start) {
+                continue;
+            }
+            // One cap: the faces joined to `start` smoothly that face along
+            // the axis. It is kept only if creases bound it all round.
+            seen[start as usize] = true;
+            let (mut component, mut todo, mut creased) = (vec![start], vec![start], true);
+            while let Some(f) = todo.pop() {
+                let normal = surface.face_normal(f);
+                let t = triangles[f as usize];
+                for k in 0..3 {
+                    for &g in surface.faces_on_edge(t[k], t[(k + 1) % 3]) {
+                        let other = surface.face_normal(g);
+                        if other.dot(normal) <= smooth {
+                            continue;
+                        }
+                        if other.z.abs() <= facing {
+                            creased = false;
+                        } else if !seen[g as usize] {
+                            seen[g as usize] = true;
+                            component.push(g);
+                            todo.push(g);
+                        }
+                    }
+                }
+            }
+            // A cap narrower than that holds few whole elements, and rows
+            // round it, wrapped over its rim, cover it better.
+            let (lo, hi) = component
+                .iter()
+                .flat_map(|&f| triangles[f as usize])
+                .fold((DVec3::INFINITY, DVec3::NEG_INFINITY), |(lo, hi), v| {
+                    (lo.min(surface.positions()[v as usize]), hi.max(surface.positions()[v as usize]))
+                });
+            if creased && (hi - lo).x.min((hi - lo).y) >= turn_radius_mm {
+                for f in component {
+                    cap[f as usize] = true;
+                }
+            }
+        }
+        for (f, direction) in self.directions.iter_mut().enumerate() {
+            if cap[f] {
+                *direction = tangent(surface, f as u32, DVec3::X);
+            }
+        }
+        self.caps = cap;
+        self
+    }
+
+    /// Whether face `f` lies on a straight cap
+    /// ([`GuidanceField::with_straight_caps`]). Across a cap's edge the
+    /// field jumps, so a patch keeps to the seed's side of it.
+    pub fn on_cap(&self, f: u32) -> bool {
+        self.caps.get(f as usize).copied().unwrap_or(false)
     }
 
     /// The field over face `f`: a unit tangent.

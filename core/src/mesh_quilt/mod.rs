@@ -37,7 +37,7 @@ pub use edge::{EDGE_TOLERANCE_MM, EdgeTrimmed, THREAD_ASPECT, trim_to_area};
 pub use element::Element;
 pub use error::QuiltError;
 pub use faces::{Closest, Faces};
-pub use field::{GuidanceField, MAX_FIELD_POINTS, parse_strokes};
+pub use field::{CAP_FACING_DEG, CAP_SMOOTH_DEG, GuidanceField, MAX_FIELD_POINTS, parse_strokes};
 pub use foot::{FLOOR_TOLERANCE_MM, Trimmed, trim_below};
 pub use merge::MergeCounts;
 pub use patch::MAX_AREA_DISTORTION;
