@@ -6,6 +6,7 @@
 use glam::DVec3;
 
 use super::{Direction, QuiltError};
+use crate::geom::Rect;
 use crate::surface::SurfaceMesh;
 
 /// Strokes nearer a face than this, as a fraction of the model's size,
@@ -236,13 +237,14 @@ impl GuidanceField {
             }
             // A cap narrower than that holds few whole elements, and rows
             // round it, wrapped over its rim, cover it better.
-            let (lo, hi) = component
-                .iter()
-                .flat_map(|&f| triangles[f as usize])
-                .fold((DVec3::INFINITY, DVec3::NEG_INFINITY), |(lo, hi), v| {
-                    (lo.min(surface.positions()[v as usize]), hi.max(surface.positions()[v as usize]))
-                });
-            if creased && (hi - lo).x.min((hi - lo).y) >= turn_radius_mm {
+            let across = Rect::from_points(
+                component
+                    .iter()
+                    .flat_map(|&f| triangles[f as usize])
+                    .map(|v| surface.positions()[v as usize].truncate()),
+            )
+            .map_or(0.0, |extent| extent.size().min_element());
+            if creased && across >= turn_radius_mm {
                 for f in component {
                     cap[f as usize] = true;
                 }
