@@ -32,7 +32,7 @@ fn corpus_subset_meets_its_plan_in_the_band() {
     }
     // Every 30th ornament: both families, decided by name order alone.
     // Plus ornaments that once came out unlike their plan (see the end).
-    let regressions = ["vectorian56.svg", "vectorian111.svg", "vectorian174.svg"];
+    let regressions = ["vectorian56.svg", "vectorian111.svg", "vectorian169.svg", "vectorian174.svg"];
     let chosen: Vec<&PathBuf> = files
         .iter()
         .enumerate()
@@ -85,7 +85,10 @@ fn corpus_subset_meets_its_plan_in_the_band() {
     // Every mismatch is a bug. Three such were found here: bends that folded
     // thin strokes over themselves (vectorian56), end pieces narrower than
     // the gap at a break turned inside out (vectorian174), and parts touching
-    // at a point merged once mapped onto a loop (vectorian111).
+    // at a point merged once mapped onto a loop (vectorian111). One more
+    // comes from the exemplar itself: curls grazing a stroke through a neck
+    // a thousandth of a millimetre wide, pinched off by every sequence
+    // (vectorian169: its narrow gaps are closed and it is analysed again).
     println!("{answered} of {runs} answered, {} not as planned", inexact.len());
     assert!(inexact.is_empty(), "{} of {answered} differ from the plan: {inexact:#?}", inexact.len());
 }

@@ -49,7 +49,7 @@ impl Growing {
         let mut settings = settings.clone();
         settings.alternative = 0;
         let scale = settings.mm_per_unit(exemplar.height());
-        let (set, _) = analyse(exemplar, &settings, scale)?;
+        let (set, _) = analyse(exemplar, &settings, scale, None)?;
         Ok(Growing { exemplar: exemplar.clone(), settings, scale, set, laid: Vec::new(), kept: 0 })
     }
 
@@ -76,6 +76,7 @@ impl Growing {
             1,
             false,
             &prefix,
+            0,
             Default::default(),
             control,
         )?;

@@ -11,7 +11,9 @@ use super::{
 };
 use crate::control::{Control, MaybeCancelled};
 use crate::curve::{Curve, CurveError, MAPPING_TOLERANCE_MM, PlanarPattern, map_along, planar_topology_of_clean};
-use crate::geom::{PatternTopology, count_topology, separate_touching, union, without_slivers};
+use crate::geom::{
+    PatternTopology, Region, close_narrow_gaps, count_topology, separate_touching, union, without_slivers,
+};
 use crate::mesh::MeshError;
 use crate::report::{Timings, Warning};
 
@@ -76,6 +78,15 @@ pub struct Synthesis {
     pub timings: Timings,
     /// Things the person should know.
     pub warnings: Vec<Warning>,
+}
+
+impl Synthesis {
+    /// Whether the topology counted on the geometry is the one the solver
+    /// planned.
+    pub fn as_planned(&self) -> bool {
+        self.topology.components == self.solution.components as usize
+            && self.topology.holes == self.solution.holes as usize
+    }
 }
 
 /// Relative length error past which the person is told the pattern was
@@ -160,17 +171,57 @@ fn alternatives_at_scale(
     every: bool,
     control: &Control,
 ) -> Result<Vec<Synthesis>, SynthesisError> {
-    let (set, timings) = analyse(exemplar, settings, scale)?;
-    laid_out(&set, exemplar, curve, settings, scale, count, every, &[], timings, control)
+    let (set, timings) = analyse(exemplar, settings, scale, None)?;
+    let mut all = laid_out(&set, exemplar, curve, settings, scale, count, every, &[], 0, timings, control)?;
+    if all.iter().all(Synthesis::as_planned) {
+        return Ok(all);
+    }
+    // The plan holds on paper, but the exemplar has features finer than
+    // the geometry can carry through, and this sequence of pieces pinched
+    // one. A tip grazing a stroke is joined to it by a neck a thousandth of
+    // a millimetre across, which every sequence pinches off somewhere: the
+    // drawing's narrow gaps are closed (the neck becomes material the
+    // resolution across) and it is analysed again. Otherwise (hairline
+    // walls, say) other sequences are tried, the ones already tried
+    // excluded; most come out as planned. Only patterns that then come
+    // out as planned replace the others.
+    let resolution = RESOLUTION_MM / scale;
+    let closed = close_narrow_gaps(&exemplar.region, resolution);
+    let again = if closed != exemplar.region {
+        analyse(exemplar, settings, scale, Some(closed))
+    } else {
+        analyse(exemplar, settings, scale, None)
+    };
+    let others = again.and_then(|(set, timings)| {
+        laid_out(&set, exemplar, curve, settings, scale, count, every, &[], TOPOLOGY_RETRIES, timings, control)
+    });
+    match others {
+        Ok(others) => {
+            for (slot, other) in all.iter_mut().zip(others) {
+                if !slot.as_planned() && other.as_planned() {
+                    let spent = std::mem::replace(slot, other);
+                    slot.timings.absorb(&spent.timings);
+                }
+            }
+        }
+        Err(e) if e.is_cancelled() => return Err(e),
+        // The first patterns stand, with their warnings.
+        Err(_) => {}
+    }
+    Ok(all)
 }
 
 /// The exemplar cut into pieces at `scale` (mm per exemplar unit), with the
 /// time it took: what every pattern from the same exemplar and settings
 /// shares, whatever the curve.
+///
+/// `drawn` replaces the exemplar's region where given (its narrow gaps
+/// closed, see [`close_narrow_gaps`]).
 pub(crate) fn analyse(
     exemplar: &Exemplar,
     settings: &Settings,
     scale: f64,
+    drawn: Option<Region>,
 ) -> Result<(PieceSet, Timings), SynthesisError> {
     if !(scale.is_finite() && scale > 0.0) {
         return Err(InvalidSetting(format!("the scale {scale} mm per unit must be positive")).into());
@@ -187,9 +238,10 @@ pub(crate) fn analyse(
         // Parts that only touch at a point are moved apart, as they are in
         // the result, so that the plan counts them apart too.
         let resolution = RESOLUTION_MM / scale;
+        let drawn = drawn.as_ref().unwrap_or(&exemplar.region);
         let settled = Exemplar::from_region(
             exemplar.name.clone(),
-            separate_touching(&without_slivers(&exemplar.region, resolution), resolution),
+            separate_touching(&without_slivers(drawn, resolution), resolution),
         )
         .unwrap_or_else(|_| exemplar.clone());
         PieceSet::new(&settled, &slicing)
@@ -210,6 +262,7 @@ pub(crate) fn laid_out(
     count: u32,
     every: bool,
     prefix: &[usize],
+    retries: usize,
     mut timings: Timings,
     control: &Control,
 ) -> Result<Vec<Synthesis>, SynthesisError> {
@@ -224,15 +277,6 @@ pub(crate) fn laid_out(
     options.seed = settings.seed;
     options.band_height = settings.band_mm / scale;
     options.prefix = prefix.to_vec();
-    let mut solutions = Vec::new();
-    for k in 0..count.max(1) {
-        let solution = timings.time("solve", || super::solve(set, &options, control))?;
-        options.prefix.clear();
-        options.avoid.push(solution.pieces.clone());
-        if every || k + 1 == count.max(1) {
-            solutions.push(solution);
-        }
-    }
     let build = |solution: Solution, mut timings: Timings| -> Synthesis {
         let (band, planar, topology) = timings.time("geometry", || {
             let offsets = spread_offsets(set, &solution.pieces, &solution.offsets, kind);
@@ -286,17 +330,49 @@ pub(crate) fn laid_out(
             warnings,
         }
     };
-    let last = solutions.len().saturating_sub(1);
-    Ok(solutions
-        .into_iter()
-        .enumerate()
-        .map(|(k, solution)| {
-            // Analysis and searches are shared: the last carries their time.
-            let shared = if k == last { timings.clone() } else { Timings::default() };
-            build(solution, shared)
-        })
-        .collect())
+    let total = count.max(1);
+    let mut built: Vec<Synthesis> = Vec::new();
+    // Geometry made for patterns that were then set aside.
+    let mut discarded = Timings::default();
+    for k in 0..total {
+        let solution = timings.time("solve", || super::solve(set, &options, control))?;
+        options.prefix.clear();
+        options.avoid.push(solution.pieces.clone());
+        if !(every || k + 1 == total) {
+            continue;
+        }
+        let mut synthesis = build(solution, Timings::default());
+        // Counted on the final geometry, a pattern that did not come out as
+        // planned is set aside for another, searched with it excluded.
+        for _ in 0..retries {
+            if synthesis.as_planned() {
+                break;
+            }
+            let other = match timings.time("solve", || super::solve(set, &options, control)) {
+                Ok(other) => other,
+                Err(e) if e.is_cancelled() => return Err(e.into()),
+                // No other pattern: the one found stands, with its warning.
+                Err(_) => break,
+            };
+            options.avoid.push(other.pieces.clone());
+            discarded.absorb(&synthesis.timings);
+            synthesis = build(other, Timings::default());
+        }
+        built.push(synthesis);
+    }
+    // Analysis and searches are shared: the last carries their time.
+    if let Some(last) = built.last_mut() {
+        let own = std::mem::replace(&mut last.timings, timings);
+        last.timings.absorb(&own);
+        last.timings.absorb(&discarded);
+    }
+    Ok(built)
 }
+
+/// How many other patterns are tried, one after another, when the one
+/// found comes out with a topology other than planned (see
+/// `alternatives_at_scale`).
+pub const TOPOLOGY_RETRIES: usize = 3;
 
 /// Strips made along `u` for a rectangle's second pass: stacked, they are
 /// its exemplar, so that the rows it cuts from them differ (one strip

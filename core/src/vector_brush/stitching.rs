@@ -69,12 +69,22 @@ struct MonotoneMap {
 
 impl MonotoneMap {
     fn new(points: &[(f64, f64)]) -> Self {
-        let x: Vec<f64> = points.iter().map(|p| p.0).collect();
-        let y: Vec<f64> = points.iter().map(|p| p.1).collect();
+        // Two portals that meet at one point of the cut (the bottom of one
+        // is the top of the next) give that height twice: kept once, since
+        // a step of no height has no secant.
+        let mut x: Vec<f64> = Vec::with_capacity(points.len());
+        let mut y: Vec<f64> = Vec::with_capacity(points.len());
+        for &(px, py) in points {
+            if x.last().is_some_and(|&last| px <= last) {
+                continue;
+            }
+            x.push(px);
+            y.push(py);
+        }
         let n = x.len();
         let secant: Vec<f64> = (0..n.saturating_sub(1)).map(|k| (y[k + 1] - y[k]) / (x[k + 1] - x[k])).collect();
         let mut slope = vec![1.0; n];
-        for k in 0..n {
+        for k in (0..n).filter(|_| n >= 2) {
             slope[k] = if k == 0 || k == n - 1 {
                 let s = secant[if k == 0 { 0 } else { n - 2 }];
                 1.0f64.min(3.0 * s)
