@@ -76,7 +76,8 @@ struct Sample {
     along: f64,
 }
 
-/// Midpoints of the places where two outlines come closer than `2 · radius`.
+/// The places where two outlines face each other across a gap narrower
+/// than `2 · radius`: the ends of the two short stretches of outline there.
 fn close_places(region: &Region, radius: f64) -> Vec<[DVec2; 4]> {
     let width = 2.0 * radius;
     let perimeter: f64 = region.rings().map(|r| super::ring_perimeter(r)).sum();

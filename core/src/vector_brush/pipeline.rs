@@ -187,14 +187,15 @@ fn alternatives_at_scale(
     // out as planned replace the others.
     let resolution = RESOLUTION_MM / scale;
     let closed = close_narrow_gaps(&exemplar.region, resolution);
-    let again = if closed != exemplar.region {
-        analyse(exemplar, settings, scale, Some(closed))
-    } else {
-        analyse(exemplar, settings, scale, None)
+    let retried = |set: &PieceSet, timings: Timings| {
+        laid_out(set, exemplar, curve, settings, scale, count, every, &[], TOPOLOGY_RETRIES, timings, control)
     };
-    let others = again.and_then(|(set, timings)| {
-        laid_out(&set, exemplar, curve, settings, scale, count, every, &[], TOPOLOGY_RETRIES, timings, control)
-    });
+    let others = if closed != exemplar.region {
+        analyse(exemplar, settings, scale, Some(closed)).and_then(|(closed_set, timings)| retried(&closed_set, timings))
+    } else {
+        // Nothing to close: the first analysis stands.
+        retried(&set, Timings::default())
+    };
     match others {
         Ok(others) => {
             for (slot, other) in all.iter_mut().zip(others) {

@@ -84,7 +84,8 @@ impl MonotoneMap {
         let n = x.len();
         let secant: Vec<f64> = (0..n.saturating_sub(1)).map(|k| (y[k + 1] - y[k]) / (x[k + 1] - x[k])).collect();
         let mut slope = vec![1.0; n];
-        for k in (0..n).filter(|_| n >= 2) {
+        // A single height (one portal of no width) is a plain shift.
+        for k in 0..if n >= 2 { n } else { 0 } {
             slope[k] = if k == 0 || k == n - 1 {
                 let s = secant[if k == 0 { 0 } else { n - 2 }];
                 1.0f64.min(3.0 * s)
