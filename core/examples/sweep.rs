@@ -174,8 +174,13 @@ fn run_one(
         avoidable: false,
     };
     let start = Instant::now();
-    let result = synthesize(exemplar, curve, &settings, &Control::default())
-        .and_then(|s| extrude(&s.planar.region, settings.thickness_mm).map(|m| (s, m)).map_err(Into::into));
+    let mut mesh_ms = 0.0;
+    let result = synthesize(exemplar, curve, &settings, &Control::default()).and_then(|s| {
+        let meshing = Instant::now();
+        let mesh = extrude(&s.planar.region, settings.thickness_mm);
+        mesh_ms = meshing.elapsed().as_secs_f64() * 1e3;
+        mesh.map(|m| (s, m)).map_err(Into::into)
+    });
     run.time_ms = start.elapsed().as_secs_f64() * 1e3;
     let (synthesis, mesh) = match result {
         Ok(r) => r,
@@ -205,7 +210,9 @@ fn run_one(
     run.auto = s.autocorrelation;
     run.stages = ["analysis", "solve", "geometry"]
         .iter()
-        .map(|k| format!("{:.0}", synthesis.timings.stage_ms(k).unwrap_or(0.0)))
+        .map(|k| synthesis.timings.stage_ms(k).unwrap_or(0.0))
+        .chain([mesh_ms])
+        .map(|ms| format!("{ms:.0}"))
         .collect::<Vec<_>>()
         .join("/");
     run.region = Some(synthesis.planar.region.clone());

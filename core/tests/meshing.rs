@@ -62,3 +62,58 @@ fn rings_that_cross_in_one_group_are_still_refused_or_repaired() {
     assert_eq!(mesh.shell_count(), 2);
     assert!((mesh.signed_volume() - (16.0 + 16.0 - 4.0 + 16.0)).abs() < 1e-6);
 }
+
+fn circle(centre: DVec2, radius: f64, n: usize, clockwise: bool) -> Vec<DVec2> {
+    let mut ring: Vec<DVec2> = (0..n)
+        .map(|k| {
+            let t = std::f64::consts::TAU * k as f64 / n as f64;
+            centre + radius * DVec2::new(t.cos(), t.sin())
+        })
+        .collect();
+    if clockwise {
+        ring.reverse();
+    }
+    ring
+}
+
+#[test]
+fn a_large_pattern_triangulated_in_slabs_is_one_sound_body_of_its_own_volume() {
+    // Like a pattern along a loop: one outline whose bounds hold everything,
+    // tens of thousands of vertices, holes everywhere (some with islands),
+    // and a wavy rim that crosses any vertical line many times.
+    let wavy = |radius: f64, n: usize, clockwise: bool| {
+        let mut ring: Vec<DVec2> = (0..n)
+            .map(|k| {
+                let t = std::f64::consts::TAU * k as f64 / n as f64;
+                (radius + 1.5 * (60.0 * t).sin()) * DVec2::new(t.cos(), t.sin())
+            })
+            .collect();
+        if clockwise {
+            ring.reverse();
+        }
+        ring
+    };
+    let mut holes = vec![wavy(30.0, 12_000, true)];
+    let mut islands = Vec::new();
+    for k in 0..240 {
+        let t = std::f64::consts::TAU * k as f64 / 240.0;
+        let centre = 37.0 * DVec2::new(t.cos(), t.sin());
+        holes.push(circle(centre, 0.3, 48, true));
+        if k % 3 == 0 {
+            islands.push(Polygon { outer: circle(centre, 0.1, 24, false), holes: vec![] });
+        }
+    }
+    let mut polygons = vec![Polygon { outer: wavy(44.0, 12_000, false), holes }];
+    polygons.extend(islands);
+    let region = Region::new(polygons);
+    let vertices: usize = region.rings().map(|r| r.len()).sum();
+    assert!(vertices > 30_000);
+    let thickness_mm = 2.0;
+    let mesh = extrude(&region, thickness_mm).unwrap();
+    mesh.sanity_check().unwrap();
+    assert_eq!(mesh.shell_count(), 1 + 80);
+    // The slabs' cut lines add vertices where they cross the outlines.
+    assert!(mesh.vertices.len() > 2 * vertices, "{} vertices for {vertices} outline points", mesh.vertices.len());
+    let expected = region.area() * thickness_mm;
+    assert!((mesh.signed_volume() - expected).abs() < 1e-6 * expected, "{} against {expected}", mesh.signed_volume());
+}

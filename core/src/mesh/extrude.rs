@@ -199,16 +199,36 @@ fn extrude_exactly(
     }
     if let Some(edge_mm) = fine {
         let all: Vec<usize> = (0..rings.len()).collect();
-        return Ok(refined(constrained(&points, &rings, &all)?.0, edge_mm));
+        return Ok(refined(constrained(&points, &ring_edges(&rings, &all))?.0, edge_mm));
     }
     // Rings whose bounding boxes are apart cannot cross or touch, so each
     // group of overlapping ones is triangulated on its own, groups on every
     // core; each group is checked for crossings exactly as the whole was.
+    // Large groups are cut into slabs, triangulated on every core as well.
     let groups = overlapping_groups(&points, &rings);
+    let mut jobs: Vec<(usize, Vec<[usize; 2]>)> = Vec::new();
+    for (g, group) in groups.iter().enumerate() {
+        match super::slabs::slab_edges(&mut points, &mut rings, group) {
+            Some(slabs) => jobs.extend(slabs.into_iter().map(|edges| (g, edges))),
+            None => jobs.push((g, ring_edges(&rings, group))),
+        }
+    }
     let faces: Vec<Result<Vec<[u32; 3]>, MeshError>> =
-        groups.par_iter().map(|group| inside_faces(&points, &rings, group)).collect();
-    // The first group's error, whichever thread met it first.
-    let faces: Vec<Vec<[u32; 3]>> = faces.into_iter().collect::<Result<_, _>>()?;
+        jobs.par_iter().map(|(_, edges)| inside_faces(&points, edges)).collect();
+    let mut by_group: Vec<Vec<Result<Vec<[u32; 3]>, MeshError>>> = groups.iter().map(|_| Vec::new()).collect();
+    for ((g, _), result) in jobs.iter().zip(faces) {
+        by_group[*g].push(result);
+    }
+    let mut faces: Vec<Vec<[u32; 3]>> = Vec::with_capacity(groups.len());
+    for (group, results) in groups.iter().zip(by_group) {
+        match results.into_iter().collect::<Result<Vec<_>, _>>() {
+            Ok(slabs) => faces.extend(slabs),
+            // A slab that could not be triangulated: the group whole, with
+            // the crossings its rings now have, which is checked as before.
+            // The first error, whichever thread met it first.
+            Err(_) => faces.push(inside_faces(&points, &ring_edges(&rings, group))?),
+        }
+    }
     let count = points.len() as u32;
     let mut mesh = Mesh { vertices: Vec::with_capacity(2 * points.len()), triangles: Vec::new() };
     mesh.vertices.extend(points.iter().map(|p| [p.x, p.y, 0.0]));
@@ -269,29 +289,32 @@ fn overlapping_groups(points: &[Point2<f64>], rings: &[Vec<usize>]) -> Vec<Vec<u
     groups
 }
 
-/// The constrained Delaunay triangulation of the rings in `group`, with,
-/// for each of its vertices, its index in `points`. An error where an
-/// outline crosses itself or another, or a vertex lies on another edge.
+/// The edges of the rings in `group`, as indices into the points.
+fn ring_edges(rings: &[Vec<usize>], group: &[usize]) -> Vec<[usize; 2]> {
+    group
+        .iter()
+        .map(|&r| &rings[r])
+        .flat_map(|ring| (0..ring.len()).map(|k| [ring[k], ring[(k + 1) % ring.len()]]))
+        .collect()
+}
+
+/// The constrained Delaunay triangulation whose constraints are `edges`
+/// (indices into `points`), with, for each of its vertices, its index in
+/// `points`. An error where an outline crosses itself or another, or a
+/// vertex lies on another edge.
 fn constrained(
     points: &[Point2<f64>],
-    rings: &[Vec<usize>],
-    group: &[usize],
+    global_edges: &[[usize; 2]],
 ) -> Result<(ConstrainedDelaunayTriangulation<Point2<f64>>, Vec<usize>), MeshError> {
     let mut local: FxHashMap<usize, usize> = FxHashMap::default();
     let mut global: Vec<usize> = Vec::new();
-    let mut edges: Vec<[usize; 2]> = Vec::new();
-    for ring in group.iter().map(|&r| &rings[r]) {
-        let ids: Vec<usize> = ring
-            .iter()
-            .map(|&g| {
-                *local.entry(g).or_insert_with(|| {
-                    global.push(g);
-                    global.len() - 1
-                })
-            })
-            .collect();
-        edges.extend((0..ids.len()).map(|k| [ids[k], ids[(k + 1) % ids.len()]]));
-    }
+    let mut local_of = |g: usize| {
+        *local.entry(g).or_insert_with(|| {
+            global.push(g);
+            global.len() - 1
+        })
+    };
+    let edges: Vec<[usize; 2]> = global_edges.iter().map(|&[a, b]| [local_of(a), local_of(b)]).collect();
     let group_points: Vec<Point2<f64>> = global.iter().map(|&g| points[g]).collect();
     let mut conflicts = 0;
     let cdt = ConstrainedDelaunayTriangulation::<Point2<f64>>::try_bulk_load_cdt(group_points, edges.clone(), |_| {
@@ -310,10 +333,10 @@ fn constrained(
     Ok((cdt, global))
 }
 
-/// The triangles inside the rings of `group` (counter-clockwise, indices
-/// into `points`).
-fn inside_faces(points: &[Point2<f64>], rings: &[Vec<usize>], group: &[usize]) -> Result<Vec<[u32; 3]>, MeshError> {
-    let (cdt, global) = constrained(points, rings, group)?;
+/// The triangles inside the closed outlines made by `edges` (indices into
+/// `points`), counter-clockwise, as indices into `points`.
+fn inside_faces(points: &[Point2<f64>], edges: &[[usize; 2]]) -> Result<Vec<[u32; 3]>, MeshError> {
+    let (cdt, global) = constrained(points, edges)?;
     // Crossing a ring edge toggles inside and outside.
     let inside = crate::geom::faces_inside(&cdt);
     Ok(cdt

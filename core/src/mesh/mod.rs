@@ -11,6 +11,7 @@ mod refine;
 mod rings;
 mod sanity;
 mod short_edges;
+mod slabs;
 mod t_junctions;
 mod thicken;
 mod triangle_mesh;
