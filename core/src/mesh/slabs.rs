@@ -55,9 +55,8 @@ pub(super) fn slab_edges(
             let (a, b) = (points[ia], points[ib]);
             let (lo, hi) = (slab_of(a.x.min(b.x)), slab_of(a.x.max(b.x)));
             // The lines between `a` and `b`, in the order the edge meets them.
-            let lines: Box<dyn Iterator<Item = usize>> =
-                if a.x < b.x { Box::new(lo..hi) } else { Box::new((lo..hi).rev()) };
-            for line in lines {
+            for step in 0..hi - lo {
+                let line = if a.x < b.x { lo + step } else { hi - 1 - step };
                 let c = cuts[line];
                 let y = f64::from((a.y + (c - a.x) / (b.x - a.x) * (b.y - a.y)) as f32);
                 let id = points.len() + added.len();
