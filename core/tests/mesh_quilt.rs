@@ -560,3 +560,41 @@ fn woven_threads_run_two_ways_across_a_flat_top() {
     let agreement = sum.length() / weight;
     assert!(agreement > 0.7, "{threads} threads over the top agree on two directions by {agreement:.2}");
 }
+
+/// A patch on a flat top keeps to the top, and an element was laid only
+/// where all of it landed on the patch: every thread reaching past the rim
+/// was left out, and a margin of 3 to 8 mm inside the rim stayed bare.
+/// Threads are now laid whole in the top's plane and cut off at the rim.
+/// Measured on the top's outer band, 16 to 19.5 mm from the axis of a post
+/// 40 mm across: the share of its points farther than 1.5 mm, seen from
+/// above, from every vertex of the elements lying on the top, was 0.198 and
+/// is 0 now; and how far those elements reach from the axis, 20.6 mm (past
+/// the rim) and 20.0 now.
+#[test]
+fn woven_threads_reach_the_rim_of_a_flat_top() {
+    let post = turned(&[(20.0, 0.0), (20.0, 6.0), (0.0, 6.0)]);
+    let (_, quilt) = woven_round(&post);
+    // Elements on the top: most of their vertices stand above its plane.
+    let on_top: Vec<&Element> = quilt
+        .elements
+        .iter()
+        .filter(|e| 2 * e.vertices.iter().filter(|v| v.z > 6.0).count() > e.vertices.len())
+        .collect();
+    let over_top: Vec<glam::DVec2> = on_top.iter().flat_map(|e| e.vertices.iter()).map(|v| v.truncate()).collect();
+    let (mut bare, mut all) = (0, 0);
+    for i in 0..8 {
+        let radius = 16.0 + 0.5 * i as f64;
+        for k in 0..360 {
+            let p = glam::DVec2::from_angle((k as f64).to_radians()) * radius;
+            all += 1;
+            if !over_top.iter().any(|v| v.distance(p) <= 1.5) {
+                bare += 1;
+            }
+        }
+    }
+    let share = bare as f64 / all as f64;
+    // What lies on the top stays within the rim.
+    let reach = over_top.iter().map(|v| v.length()).fold(0.0, f64::max);
+    assert!(share < 0.05, "{:.1} % of the top's outer band is bare", share * 100.0);
+    assert!(reach <= 20.0 + 1e-3, "a thread over the top reaches {reach:.3} mm from the axis, past the rim");
+}

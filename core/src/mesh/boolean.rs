@@ -1,4 +1,4 @@
-//! Booleans of closed meshes (union, difference), through `boolmesh`: a
+//! Booleans of closed meshes (union, difference, intersection), through `boolmesh`: a
 //! port of Manifold's algorithm, which keeps its output closed and
 //! manifold even where the two inputs touch along faces.
 
@@ -100,4 +100,22 @@ pub fn union_solids(model: &Mesh, pattern: &Mesh) -> Result<Mesh, BooleanError> 
 /// ```
 pub fn difference_solids(model: &Mesh, pattern: &Mesh) -> Result<Mesh, BooleanError> {
     combine(model, pattern, OpType::Subtract)
+}
+
+/// Everything inside both `model` and `pattern`.
+///
+/// ```
+/// use tracery_core::DVec2;
+/// use tracery_core::geom::{Polygon, Region};
+/// use tracery_core::mesh::{extrude, intersect_solids};
+/// let square = |x: f64| Region::new(vec![Polygon {
+///     outer: vec![DVec2::new(x, 0.0), DVec2::new(x + 2.0, 0.0), DVec2::new(x + 2.0, 2.0), DVec2::new(x, 2.0)],
+///     holes: vec![],
+/// }]);
+/// let both = intersect_solids(&extrude(&square(0.0), 1.0).unwrap(), &extrude(&square(1.5), 1.0).unwrap()).unwrap();
+/// assert!(both.sanity_check().is_ok());
+/// assert!((both.signed_volume() - 1.0).abs() < 1e-9);
+/// ```
+pub fn intersect_solids(model: &Mesh, pattern: &Mesh) -> Result<Mesh, BooleanError> {
+    combine(model, pattern, OpType::Intersect)
 }

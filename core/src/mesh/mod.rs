@@ -16,7 +16,7 @@ mod t_junctions;
 mod thicken;
 mod triangle_mesh;
 
-pub use boolean::{BooleanError, difference_solids, is_boolean_solid, union_solids};
+pub use boolean::{BooleanError, difference_solids, intersect_solids, is_boolean_solid, union_solids};
 pub use boundary::boundary_loops;
 pub(crate) use extrude::checked_thickness;
 pub use extrude::{MeshError, compact, extrude, triangulate_fine};

@@ -18,6 +18,7 @@ use rustc_hash::FxHashMap;
 use glam::{DVec2, DVec3};
 
 use super::faces::{ElementFaces, Faces};
+use super::flat_cap::FlatCaps;
 use super::matching::{Input, MARGIN_CELLS, Neighbourhood, best_translation, reach_mm, thin};
 use super::merge::merge_patch;
 use super::patch::{FaceGraph, Patch, triangle_area_3d};
@@ -50,6 +51,8 @@ pub struct ShellReport {
     pub max_patch_distortion: f64,
     /// Seeds whose patch could not be laid flat at any size: left bare.
     pub bare_seeds: usize,
+    /// Threads cut off at the rim of a flat top.
+    pub cut_at_rim: usize,
 }
 
 /// Each asked point's closest point of the base, by the point's bits.
@@ -157,7 +160,8 @@ pub fn quilt_surface(
     let graph = FaceGraph::new(surface);
     let before = Shell::along_normals(surface, size.z).stretch(surface);
     let shell = Shell::least_stretch(surface, size.z, settings.seed);
-    let mut report = ShellReport { before, after: shell.stretch(surface), max_patch_distortion: 1.0, bare_seeds: 0 };
+    let mut report =
+        ShellReport { before, after: shell.stretch(surface), max_patch_distortion: 1.0, bare_seeds: 0, cut_at_rim: 0 };
     let lowest = surface.positions().iter().map(|p| p.z).fold(f64::INFINITY, f64::min);
     let mut processed: Vec<bool> = (0..triangles.len() as u32)
         .map(|f| surface.face_normal(f).z < -0.9 && graph.centres[f as usize].z < lowest + 0.5 * cell_mm)
@@ -174,6 +178,9 @@ pub fn quilt_surface(
     let seed_uv = DVec2::splat(0.5 * cell_mm);
     // The swatch's height 0 lies this far inside the model (see `Settings::sink_mm`).
     let sink_mm = settings.sink_mm;
+    // Prisms past anything an element laid on a cap can reach.
+    let caps = FlatCaps::new(surface, field, &graph, sink_mm + size.z, 2.0 * size.z);
+    let fragment_mm3 = swatch.fragment_volume_mm3();
     while let Some(seed) = most_constrained(&graph, &processed) {
         control.check()?;
         let Some(patch) = grow_patch(surface, &graph, seed, field, radius_mm, seed_uv, &mut report) else {
@@ -231,22 +238,36 @@ pub fn quilt_surface(
             cell_mm,
             near_box: (near_box.0 - grow, near_box.1 + grow),
         };
-        let placed: Vec<Element> = swatch
-            .elements
-            .iter()
-            .filter_map(|e| {
-                let vertices: Option<Vec<DVec3>> = e
+        let cap = caps.of_face(seed);
+        let mut placed: Vec<Element> = Vec::new();
+        for e in &swatch.elements {
+            let on_patch: Option<Vec<DVec3>> = e
+                .vertices
+                .iter()
+                .map(|&v| {
+                    let q = placement.to_frame(v);
+                    let (f, b) = patch.locate(q.truncate())?;
+                    Some(shell.point(surface, f, b, q.z - sink_mm))
+                })
+                .collect();
+            if let Some(vertices) = on_patch {
+                placed.push(Element { vertices, triangles: e.triangles.clone() });
+            } else if let Some(cap) = cap {
+                // Past the patch's edge on a flat cap: laid whole in its
+                // plane, then fitted to the rim (see `flat_cap`).
+                let vertices = e
                     .vertices
                     .iter()
                     .map(|&v| {
                         let q = placement.to_frame(v);
-                        let (f, b) = patch.locate(q.truncate())?;
-                        Some(shell.point(surface, f, b, q.z - sink_mm))
+                        patch.on_seed_plane(surface, q.truncate()) + cap.normal() * (q.z - sink_mm)
                     })
                     .collect();
-                Some(Element { vertices: vertices?, triangles: e.triangles.clone() })
-            })
-            .collect();
+                let fitted = cap.fit(Element { vertices, triangles: e.triangles.clone() }, fragment_mm3);
+                report.cut_at_rim += usize::from(fitted.cut);
+                placed.extend(fitted.pieces);
+            }
+        }
         let counts = merge_patch(&mut quilt.elements, &mut output_faces, placed, &zones, settings, reach);
         quilt.counts.merges.add(&counts);
         for &f in &claimed_faces {
@@ -255,6 +276,7 @@ pub fn quilt_surface(
         quilt.counts.patches += 1;
         control.report(processed.iter().filter(|&&p| p).count() as f32 / total);
     }
+    report.cut_at_rim += caps.trim_overhangs(&mut quilt.elements, sink_mm + size.z, fragment_mm3);
     super::planar::keep_whole(&mut quilt, swatch);
     quilt.shell = Some(report);
     Ok(quilt)

@@ -8,7 +8,7 @@ use glam::{DVec2, DVec3};
 
 use super::Element;
 use super::foot::cuboid;
-use crate::mesh::{BooleanError, difference_solids, is_boolean_solid};
+use crate::mesh::{BooleanError, Mesh, difference_solids, is_boolean_solid};
 
 /// An element this many times as long as it is wide, seen from above, is a
 /// thread: it is cut at the edge.
@@ -84,15 +84,23 @@ pub fn trim_to_area(
         for (_, from, to) in beyond.into_iter().filter(|side| side.0) {
             mesh = difference_solids(&mesh, &cuboid(from, to))?;
         }
-        let (pieces, crumbs): (Vec<Element>, Vec<Element>) =
-            Element::from_mesh(&mesh).parts().into_iter().filter(|p| !p.triangles.is_empty()).partition(|p| {
-                let m = p.to_mesh();
-                m.signed_volume() >= min_volume_mm3 && is_boolean_solid(&m)
-            });
+        let (pieces, crumbs) = solid_pieces(&mesh, min_volume_mm3);
         trimmed.cut += 1;
-        trimmed.crumbs += crumbs.len();
+        trimmed.crumbs += crumbs;
         kept.extend(pieces);
     }
     *elements = kept;
     Ok(trimmed)
+}
+
+/// The parts of `mesh`, a cut element, that are kept: those of at least
+/// `min_volume_mm3` that the booleans take as solids; with how many others
+/// (crumbs) there were.
+pub(super) fn solid_pieces(mesh: &Mesh, min_volume_mm3: f64) -> (Vec<Element>, usize) {
+    let (pieces, crumbs): (Vec<Element>, Vec<Element>) =
+        Element::from_mesh(mesh).parts().into_iter().filter(|p| !p.triangles.is_empty()).partition(|p| {
+            let m = p.to_mesh();
+            m.signed_volume() >= min_volume_mm3 && is_boolean_solid(&m)
+        });
+    (pieces, crumbs.len())
 }

@@ -133,6 +133,8 @@ pub(super) struct Patch {
     /// Each triangle's direction of `u` on the base (unit, tangent).
     u_axis: Vec<DVec3>,
     grid: TriangleGrid,
+    /// The seed's triangle, in the patch's numbering.
+    seed_local: usize,
     /// The largest growth or shrinking of a triangle's area.
     pub distortion: f64,
 }
@@ -222,7 +224,7 @@ impl Patch {
         let (low, high) = uv.iter().fold((DVec2::INFINITY, DVec2::NEG_INFINITY), |(lo, hi), &p| (lo.min(p), hi.max(p)));
         let grid = TriangleGrid::new(&uv, &triangles, low, high);
         let local_of_face = faces.iter().enumerate().map(|(t, &f)| (f, t as u32)).collect();
-        Ok(Patch { faces, local_of_face, triangles, uv, u_axis, grid, distortion })
+        Ok(Patch { faces, local_of_face, triangles, uv, u_axis, grid, seed_local, distortion })
     }
 
     /// The base faces in the patch.
@@ -240,6 +242,18 @@ impl Patch {
     pub fn locate(&self, p: DVec2) -> Option<(u32, [f64; 3])> {
         let (t, b) = self.grid.locate(&self.uv, &self.triangles, p)?;
         Some((self.faces[t as usize], b.map(|c| c.max(0.0)).map(|c| c / b.iter().map(|c| c.max(0.0)).sum::<f64>())))
+    }
+
+    /// Where the flat point `p` lies on the plane of the seed's face, the
+    /// seed's flat map carried on past the patch's edge: on a patch of one
+    /// plane (a flat cap), the point of that plane wherever `p` is.
+    pub fn on_seed_plane(&self, surface: &SurfaceMesh, p: DVec2) -> DVec3 {
+        let corners =
+            surface.triangles()[self.faces[self.seed_local] as usize].map(|v| surface.positions()[v as usize]);
+        let flat = self.triangles[self.seed_local].map(|v| self.uv[v as usize]);
+        let jacobian = Jacobian::of(corners, flat);
+        let d = p - flat[0];
+        corners[0] + jacobian.du * d.x + jacobian.dv * d.y
     }
 
     /// The base's `u` direction (unit, tangent) over face `face`, if in the patch.
