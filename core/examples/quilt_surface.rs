@@ -3,7 +3,8 @@
 //!
 //! Three measures of the result that the quilting never reads: `bare`, the
 //! share of the base's area (all but the faces it stands on) farther than
-//! 1.5, 3 and 5 mm from every texture vertex; `runs`, the median length of the elements along their longest axis, mm
+//! 1.5, 3 and 5 mm from every texture vertex (and at 1.5 mm, of the side's
+//! top 10 mm); `runs`, the median length of the elements along their longest axis, mm
 //! (woven threads broken into short runs show as short ones); and `tilt`,
 //! the median angle between an element's longest axis and the nearer of
 //! round the `z` axis or across that, 0° to 45° (threads running round a
@@ -43,6 +44,10 @@ fn main() {
     let bare: Vec<String> =
         [1.5, 3.0, 5.0].iter().map(|&d| format!("{:.3}", bare_share(&surface, &vertices, d))).collect();
     let bare = bare.join("/");
+    // The side just under the rim: faces not facing up or down, within
+    // 10 mm of the top.
+    let top_z = surface.positions().iter().map(|p| p.z).fold(f64::MIN, f64::max);
+    let under_rim = bare_share_of(&surface, &vertices, 1.5, |n, c| n.z.abs() < 0.9 && c.z > top_z - 10.0);
     let (mut runs, mut tilts): (Vec<f64>, Vec<f64>) = quilt.elements.iter().map(|e| run_and_tilt(&e.vertices)).unzip();
     let median = |values: &mut Vec<f64>| {
         values.sort_by(f64::total_cmp);
@@ -50,7 +55,7 @@ fn main() {
     };
     let (run, tilt) = (median(&mut runs), median(&mut tilts));
     println!(
-        "{base} + {}: {} ms, bare {bare}, runs {run:.1} mm, tilt {tilt:.1}°, {} patches, {} elements ({} crossing), {} faces; {:?}; {:?}",
+        "{base} + {}: {} ms, bare {bare} (under the rim {under_rim:.3}), runs {run:.1} mm, tilt {tilt:.1}°, {} patches, {} elements ({} crossing), {} faces; {:?}; {:?}",
         swatch.name,
         elapsed,
         quilt.counts.patches,
@@ -69,6 +74,12 @@ fn main() {
 /// The share of `surface`'s area, less the faces facing straight down,
 /// whose centroid lies farther than `reach_mm` from every one of `points`.
 fn bare_share(surface: &SurfaceMesh, points: &[DVec3], reach_mm: f64) -> f64 {
+    bare_share_of(surface, points, reach_mm, |normal, _| normal.z >= -0.9)
+}
+
+/// As [`bare_share`], over the faces for which `counts(unit normal,
+/// centre)` holds.
+fn bare_share_of(surface: &SurfaceMesh, points: &[DVec3], reach_mm: f64, counts: impl Fn(DVec3, DVec3) -> bool) -> f64 {
     let cell = |p: DVec3| (p / reach_mm).floor().as_ivec3();
     let mut grid: FxHashMap<glam::IVec3, Vec<DVec3>> = FxHashMap::default();
     for &p in points {
@@ -76,12 +87,12 @@ fn bare_share(surface: &SurfaceMesh, points: &[DVec3], reach_mm: f64) -> f64 {
     }
     let (mut bare, mut total) = (0.0, 0.0);
     for (f, t) in surface.triangles().iter().enumerate() {
-        if surface.face_normal(f as u32).z < -0.9 {
-            continue;
-        }
         let [a, b, c] = t.map(|v| surface.positions()[v as usize]);
         let area = 0.5 * (b - a).cross(c - a).length();
         let centre = (a + b + c) / 3.0;
+        if !counts(surface.face_normal(f as u32), centre) {
+            continue;
+        }
         let home = cell(centre);
         let near = (-1..=1).any(|x| {
             (-1..=1).any(|y| {

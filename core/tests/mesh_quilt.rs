@@ -1,11 +1,14 @@
 //! Mesh quilting on the plane, checked apart from the code under test:
-//! closedness by counting directed edges here, crossings by a segment–
-//! triangle test written here, element integrity by volume against the
+//! closedness by counting directed edges and crossings by a segment–
+//! triangle test (both in `quilt_support`), element integrity by volume against the
 //! swatch's elements, and stitching by threads that run on past the swatch.
 
-use std::collections::HashMap;
+mod quilt_support;
 
 use glam::DVec3;
+use quilt_support::{
+    bare_share_of_faces, boxes_meet, closed, cross, crossing_pairs, segment_hits, turned, woven_round,
+};
 use tracery_core::control::Control;
 use tracery_core::mesh::Mesh;
 use tracery_core::mesh_quilt::{
@@ -13,17 +16,6 @@ use tracery_core::mesh_quilt::{
     quilt_surface,
 };
 use tracery_core::surface::SurfaceMesh;
-
-/// Every directed edge used once, and its reverse once.
-fn closed(e: &Element) -> bool {
-    let mut count: HashMap<(u32, u32), i32> = HashMap::new();
-    for t in &e.triangles {
-        for k in 0..3 {
-            *count.entry((t[k], t[(k + 1) % 3])).or_default() += 1;
-        }
-    }
-    count.iter().all(|(&(a, b), &n)| n == 1 && count.get(&(b, a)) == Some(&1))
-}
 
 fn volume(e: &Element) -> f64 {
     e.triangles
@@ -33,61 +25,6 @@ fn volume(e: &Element) -> f64 {
             a.dot(b.cross(c)) / 6.0
         })
         .sum()
-}
-
-/// Whether segment `p`–`q` passes through triangle `t` (Möller–Trumbore).
-fn segment_hits(p: DVec3, q: DVec3, t: [DVec3; 3]) -> bool {
-    let d = q - p;
-    let (e1, e2) = (t[1] - t[0], t[2] - t[0]);
-    let h = d.cross(e2);
-    let a = e1.dot(h);
-    if a.abs() < 1e-12 {
-        return false;
-    }
-    let s = p - t[0];
-    let u = s.dot(h) / a;
-    let qv = s.cross(e1);
-    let v = d.dot(qv) / a;
-    let along = e2.dot(qv) / a;
-    (0.0..=1.0).contains(&u) && v >= 0.0 && u + v <= 1.0 && (0.0..=1.0).contains(&along)
-}
-
-fn boxes_meet(a: (DVec3, DVec3), b: (DVec3, DVec3)) -> bool {
-    a.0.cmple(b.1).all() && b.0.cmple(a.1).all()
-}
-
-/// Whether two elements' surfaces cross: an edge of one through a triangle of the other.
-fn cross(a: &Element, b: &Element) -> bool {
-    if !boxes_meet(a.bounds(), b.bounds()) {
-        return false;
-    }
-    let tris =
-        |e: &Element| -> Vec<[DVec3; 3]> { e.triangles.iter().map(|t| t.map(|i| e.vertices[i as usize])).collect() };
-    let tri_box = |t: &[DVec3; 3]| (t[0].min(t[1]).min(t[2]), t[0].max(t[1]).max(t[2]));
-    let (ta, tb) = (tris(a), tris(b));
-    for x in &ta {
-        for y in &tb {
-            if !boxes_meet(tri_box(x), tri_box(y)) {
-                continue;
-            }
-            for k in 0..3 {
-                if segment_hits(x[k], x[(k + 1) % 3], *y) || segment_hits(y[k], y[(k + 1) % 3], *x) {
-                    return true;
-                }
-            }
-        }
-    }
-    false
-}
-
-fn crossing_pairs(elements: &[Element]) -> usize {
-    let mut n = 0;
-    for i in 0..elements.len() {
-        for j in i + 1..elements.len() {
-            n += cross(&elements[i], &elements[j]) as usize;
-        }
-    }
-    n
 }
 
 #[test]
@@ -271,50 +208,6 @@ fn grooved_post() -> SurfaceMesh {
     turned(&[(10.0, 0.0), (10.0, 9.0), (7.0, 12.0), (10.0, 15.0), (10.0, 24.0), (0.0, 24.0)])
 }
 
-/// A closed solid turned about `z`: its profile runs from the axis at
-/// `z = 0` through `corners` (radius, height), the last on the axis, in
-/// steps of at most 0.75 mm, with 64 segments round.
-fn turned(corners: &[(f64, f64)]) -> SurfaceMesh {
-    let profile: Vec<(f64, f64)> = {
-        let mut p = vec![(0.0, 0.0)];
-        for w in corners.windows(2).fold(vec![corners[0]], |mut acc, w| {
-            let steps = (w[1].0 - w[0].0).hypot(w[1].1 - w[0].1).div_euclid(0.75).max(1.0) as usize;
-            acc.extend((1..=steps).map(|k| {
-                let t = k as f64 / steps as f64;
-                (w[0].0 + (w[1].0 - w[0].0) * t, w[0].1 + (w[1].1 - w[0].1) * t)
-            }));
-            acc
-        }) {
-            p.push(w);
-        }
-        p
-    };
-    let segments = 64u32;
-    let mut mesh = Mesh::default();
-    let inner = &profile[1..profile.len() - 1];
-    mesh.vertices.push([0.0, 0.0, 0.0]);
-    for &(r, z) in inner {
-        for k in 0..segments {
-            let a = std::f64::consts::TAU * k as f64 / segments as f64;
-            mesh.vertices.push([r * a.cos(), r * a.sin(), z]);
-        }
-    }
-    let top = mesh.vertices.len() as u32;
-    mesh.vertices.push([0.0, 0.0, profile[profile.len() - 1].1]);
-    let ring = |i: usize, k: u32| 1 + i as u32 * segments + k % segments;
-    for k in 0..segments {
-        mesh.triangles.push([0, ring(0, k + 1), ring(0, k)]);
-        let last = inner.len() - 1;
-        mesh.triangles.push([top, ring(last, k), ring(last, k + 1)]);
-        for i in 0..last {
-            mesh.triangles.push([ring(i, k), ring(i, k + 1), ring(i + 1, k + 1)]);
-            mesh.triangles.push([ring(i, k), ring(i + 1, k + 1), ring(i + 1, k)]);
-        }
-    }
-    assert!(mesh.sanity_check().is_ok());
-    SurfaceMesh::new(mesh).unwrap()
-}
-
 #[test]
 fn a_grooved_post_is_covered_by_whole_rivets_that_never_cross() {
     let post = grooved_post();
@@ -408,18 +301,6 @@ fn strokes_drawn_up_the_cylinder_turn_the_scales() {
     assert!(err.to_string().contains("made for a model"), "{err}");
 }
 
-/// The weave at half size laid round `base` along its parallels, each
-/// element checked closed and none crossing another; with the swatch.
-fn woven_round(base: &SurfaceMesh) -> (Swatch, tracery_core::mesh_quilt::Quilt) {
-    let swatch = builtin_swatch("weave").unwrap().scaled(0.5);
-    let quilt =
-        quilt_surface(&swatch, base, &GuidanceField::around_axis(base), &Settings::default(), &Control::default())
-            .unwrap();
-    assert!(quilt.elements.iter().all(closed));
-    assert_eq!(crossing_pairs(&quilt.elements), 0);
-    (swatch, quilt)
-}
-
 /// How far round the `z` axis an element reaches, radians: a full turn
 /// less the widest gap between its vertices' angles.
 fn turn_round_axis(e: &Element) -> f64 {
@@ -462,40 +343,6 @@ fn woven_threads_run_on_round_a_post_across_patches() {
     assert!(long >= 5, "{long} of {} rows run on past 1.5 swatches", turns.len());
 }
 
-/// The share of `base`'s area, all but the faces it stands on, farther
-/// than `within_mm` from every vertex of `elements`: where the texture has
-/// a hole. Measured at face centres, weighted by area.
-fn bare_share_of_faces(base: &SurfaceMesh, elements: &[Element], within_mm: f64) -> f64 {
-    let cell = |p: DVec3| (p / within_mm).floor().as_ivec3();
-    let mut grid: HashMap<glam::IVec3, Vec<DVec3>> = HashMap::new();
-    for v in elements.iter().flat_map(|e| e.vertices.iter()) {
-        grid.entry(cell(*v)).or_default().push(*v);
-    }
-    let (mut bare, mut all) = (0.0, 0.0);
-    for t in base.triangles() {
-        let [a, b, c] = t.map(|v| base.positions()[v as usize]);
-        let normal = (b - a).cross(c - a);
-        if normal.normalize().z < -0.9 {
-            continue;
-        }
-        let (area, centre) = (0.5 * normal.length(), (a + b + c) / 3.0);
-        let home = cell(centre);
-        let near = (-1..=1).any(|i| {
-            (-1..=1).any(|j| {
-                (-1..=1).any(|k| {
-                    grid.get(&(home + glam::IVec3::new(i, j, k)))
-                        .is_some_and(|vs| vs.iter().any(|v| v.distance(centre) <= within_mm))
-                })
-            })
-        });
-        all += area;
-        if !near {
-            bare += area;
-        }
-    }
-    bare / all
-}
-
 /// Where the patches laid round a bellied base disagree, a thread of one
 /// meets a thread of another with the over-and-under out of step. Left out,
 /// each such thread leaves a hole in the weave; bent over or under where it
@@ -508,93 +355,4 @@ fn woven_threads_leave_few_holes_round_a_bellied_base() {
     let (_, quilt) = woven_round(&base);
     let bare = bare_share_of_faces(&base, &quilt.elements, 1.5);
     assert!(bare < 0.045, "{:.1} % of the base lies over 1.5 mm from any thread", bare * 100.0);
-}
-
-/// The direction, seen from above, along which `points` spread most
-/// (their principal axis in `x`, `y`), radians, and how far they spread
-/// along it, mm.
-fn principal_axis(points: &[DVec3]) -> (f64, f64) {
-    let n = points.len() as f64;
-    let mean = points.iter().map(|p| p.truncate()).sum::<glam::DVec2>() / n;
-    let (mut xx, mut xy, mut yy) = (0.0, 0.0, 0.0);
-    for p in points {
-        let d = p.truncate() - mean;
-        (xx, xy, yy) = (xx + d.x * d.x, xy + d.x * d.y, yy + d.y * d.y);
-    }
-    // The principal axis of a symmetric 2 × 2 matrix, in closed form.
-    let angle = 0.5 * (2.0 * xy).atan2(xx - yy);
-    let axis = glam::DVec2::from_angle(angle);
-    let along = points.iter().map(|p| (p.truncate() - mean).dot(axis));
-    let (lo, hi) = along.fold((f64::MAX, f64::MIN), |(lo, hi), t| (lo.min(t), hi.max(t)));
-    (angle, hi - lo)
-}
-
-/// Round the axis the circles shrink to a point in the middle of a flat
-/// top, tighter than the swatch's straight rows can follow: a weave there
-/// came out as short threads lying every way, each patch's turned to the
-/// circle through its seed. The threads over the top now run two ways at
-/// right angles, as a weave does, measured on their vertices over the top:
-/// how well their directions agree up to a quarter turn (the mean of
-/// `e^{4iθ}` weighted by length; 1 for a perfect grid, near 0 for threads
-/// lying every way) was 0.10 when rows went round (seeds 2 to 4: 0.09 to
-/// 0.23), and is 0.87 now (0.81 to 0.99).
-#[test]
-fn woven_threads_run_two_ways_across_a_flat_top() {
-    let post = turned(&[(20.0, 0.0), (20.0, 6.0), (0.0, 6.0)]);
-    let (swatch, quilt) = woven_round(&post);
-    let (mut sum, mut weight, mut threads) = (glam::DVec2::ZERO, 0.0, 0);
-    for e in &quilt.elements {
-        let over_top: Vec<DVec3> =
-            e.vertices.iter().copied().filter(|v| v.z > 5.5 && v.truncate().length() < 19.0).collect();
-        if over_top.len() < 20 {
-            continue;
-        }
-        let (angle, along) = principal_axis(&over_top);
-        if along > 0.25 * swatch.size_mm().x {
-            sum += glam::DVec2::from_angle(4.0 * angle) * along;
-            weight += along;
-            threads += 1;
-        }
-    }
-    assert!(threads >= 10, "only {threads} threads lie over the top");
-    let agreement = sum.length() / weight;
-    assert!(agreement > 0.7, "{threads} threads over the top agree on two directions by {agreement:.2}");
-}
-
-/// A patch on a flat top keeps to the top, and an element was laid only
-/// where all of it landed on the patch: every thread reaching past the rim
-/// was left out, and a margin of 3 to 8 mm inside the rim stayed bare.
-/// Threads are now laid whole in the top's plane and cut off at the rim.
-/// Measured on the top's outer band, 16 to 19.5 mm from the axis of a post
-/// 40 mm across: the share of its points farther than 1.5 mm, seen from
-/// above, from every vertex of the elements lying on the top, was 0.198 and
-/// is 0 now; and how far those elements reach from the axis, 20.6 mm (past
-/// the rim) and 20.0 now.
-#[test]
-fn woven_threads_reach_the_rim_of_a_flat_top() {
-    let post = turned(&[(20.0, 0.0), (20.0, 6.0), (0.0, 6.0)]);
-    let (_, quilt) = woven_round(&post);
-    // Elements on the top: most of their vertices stand above its plane.
-    let on_top: Vec<&Element> = quilt
-        .elements
-        .iter()
-        .filter(|e| 2 * e.vertices.iter().filter(|v| v.z > 6.0).count() > e.vertices.len())
-        .collect();
-    let over_top: Vec<glam::DVec2> = on_top.iter().flat_map(|e| e.vertices.iter()).map(|v| v.truncate()).collect();
-    let (mut bare, mut all) = (0, 0);
-    for i in 0..8 {
-        let radius = 16.0 + 0.5 * i as f64;
-        for k in 0..360 {
-            let p = glam::DVec2::from_angle((k as f64).to_radians()) * radius;
-            all += 1;
-            if !over_top.iter().any(|v| v.distance(p) <= 1.5) {
-                bare += 1;
-            }
-        }
-    }
-    let share = bare as f64 / all as f64;
-    // What lies on the top stays within the rim.
-    let reach = over_top.iter().map(|v| v.length()).fold(0.0, f64::max);
-    assert!(share < 0.05, "{:.1} % of the top's outer band is bare", share * 100.0);
-    assert!(reach <= 20.0 + 1e-3, "a thread over the top reaches {reach:.3} mm from the axis, past the rim");
 }

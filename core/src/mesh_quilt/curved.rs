@@ -18,8 +18,8 @@ use rustc_hash::FxHashMap;
 use glam::{DVec2, DVec3};
 
 use super::faces::{ElementFaces, Faces};
-use super::flat_cap::FlatCaps;
-use super::matching::{Input, MARGIN_CELLS, Neighbourhood, best_translation, reach_mm, thin};
+use super::flat_cap::{FlatCap, FlatCaps, RIM_INSET_MM};
+use super::matching::{Input, MARGIN_CELLS, Neighbourhood, Placement, best_translation, reach_mm, thin};
 use super::merge::merge_patch;
 use super::patch::{FaceGraph, Patch, triangle_area_3d};
 use super::shell::{Shell, ShellStretch};
@@ -53,6 +53,9 @@ pub struct ShellReport {
     pub bare_seeds: usize,
     /// Threads cut off at the rim of a flat top.
     pub cut_at_rim: usize,
+    /// Threads on the side reaching up past a flat top's rim, cut off
+    /// just under it.
+    pub cut_under_rim: usize,
 }
 
 /// Each asked point's closest point of the base, by the point's bits.
@@ -160,8 +163,14 @@ pub fn quilt_surface(
     let graph = FaceGraph::new(surface);
     let before = Shell::along_normals(surface, size.z).stretch(surface);
     let shell = Shell::least_stretch(surface, size.z, settings.seed);
-    let mut report =
-        ShellReport { before, after: shell.stretch(surface), max_patch_distortion: 1.0, bare_seeds: 0, cut_at_rim: 0 };
+    let mut report = ShellReport {
+        before,
+        after: shell.stretch(surface),
+        max_patch_distortion: 1.0,
+        bare_seeds: 0,
+        cut_at_rim: 0,
+        cut_under_rim: 0,
+    };
     let lowest = surface.positions().iter().map(|p| p.z).fold(f64::INFINITY, f64::min);
     let mut processed: Vec<bool> = (0..triangles.len() as u32)
         .map(|f| surface.face_normal(f).z < -0.9 && graph.centres[f as usize].z < lowest + 0.5 * cell_mm)
@@ -266,6 +275,11 @@ pub fn quilt_surface(
                 let fitted = cap.fit(Element { vertices, triangles: e.triangles.clone() }, fragment_mm3);
                 report.cut_at_rim += usize::from(fitted.cut);
                 placed.extend(fitted.pieces);
+            } else if let Some(pieces) =
+                past_rim(e, &patch, &placement, &caps, (&shell, surface), sink_mm, fragment_mm3)
+            {
+                report.cut_under_rim += 1;
+                placed.extend(pieces);
             }
         }
         let counts = merge_patch(&mut quilt.elements, &mut output_faces, placed, &zones, settings, reach);
@@ -280,6 +294,50 @@ pub fn quilt_surface(
     super::planar::keep_whole(&mut quilt, swatch);
     quilt.shell = Some(report);
     Ok(quilt)
+}
+
+/// A thread of the swatch, laid by `placement` on a patch of the side,
+/// that reaches past the patch's edge only up past a flat top's rim: the
+/// part past the edge carried on along the side's last faces, and the
+/// whole cut off flat under the top's plane, by the sink and
+/// [`RIM_INSET_MM`] (clear of the top's own threads, sunk that deep).
+/// Before, such a thread was left out, and the side's last few mm under
+/// the rim had few threads running up it. `None` for an element that is
+/// not a thread or that reaches past the patch elsewhere.
+fn past_rim(
+    e: &Element,
+    patch: &Patch,
+    placement: &Placement,
+    caps: &FlatCaps,
+    (shell, surface): (&Shell, &SurfaceMesh),
+    sink_mm: f64,
+    fragment_mm3: f64,
+) -> Option<Vec<Element>> {
+    if !e.is_thread() {
+        return None;
+    }
+    let margin_mm = {
+        let (lo, hi) = e.bounds();
+        (hi - lo).length()
+    };
+    let mut cap = None;
+    let mut vertices = Vec::with_capacity(e.vertices.len());
+    for &v in &e.vertices {
+        let q = placement.to_frame(v);
+        if let Some((f, b)) = patch.locate(q.truncate()) {
+            vertices.push(shell.point(surface, f, b, q.z - sink_mm));
+            continue;
+        }
+        let (on, normal) = patch.carried_on(surface, q.truncate());
+        let above = caps.above(on, margin_mm)?;
+        if cap.is_some_and(|c: &FlatCap| !std::ptr::eq(c, above)) {
+            return None;
+        }
+        cap = Some(above);
+        vertices.push(on + normal * (q.z - sink_mm));
+    }
+    let element = Element { vertices, triangles: e.triangles.clone() };
+    Some(cap?.cut_under(&element, sink_mm + RIM_INSET_MM, fragment_mm3))
 }
 
 /// The unprocessed face with the most processed faces within two steps

@@ -17,8 +17,8 @@ use super::edge::{EDGE_TOLERANCE_MM, solid_pieces};
 use super::field::GuidanceField;
 use super::patch::FaceGraph;
 use super::zones::boxes_overlap;
-use crate::geom::{Polygon, Region, offset, signed_area};
-use crate::mesh::{Mesh, boundary_loops, extrude, intersect_solids};
+use crate::geom::{Polygon, Rect, Region, offset, signed_area};
+use crate::mesh::{Mesh, boundary_loops, difference_solids, extrude, intersect_solids};
 use crate::surface::SurfaceMesh;
 
 /// A cap is flat when every face's normal lies within this many degrees of
@@ -37,10 +37,7 @@ pub const RIM_INSET_MM: f64 = 0.1;
 
 /// One flat cap: its plane, a frame in it, and its outline as a prism.
 pub(super) struct FlatCap {
-    origin: DVec3,
-    normal: DVec3,
-    x_axis: DVec3,
-    y_axis: DVec3,
+    frame: Frame,
     /// The cap seen along its normal, in the frame.
     outline: Region,
     /// The outline, [`RIM_INSET_MM`] inside the rim, from well below the
@@ -86,13 +83,13 @@ impl FlatCap {
         }
         let x_axis = normal.any_orthonormal_vector();
         let y_axis = normal.cross(x_axis);
-        let to_frame = |p: DVec3| DVec2::new((p - origin).dot(x_axis), (p - origin).dot(y_axis));
+        let frame = Frame { origin, normal, x_axis, y_axis };
         // The cap's triangles run counter-clockwise seen from outside, so
         // in a frame whose x × y is the normal its outer rims run
         // counter-clockwise and the rims of holes in it clockwise.
         let rings: Vec<Vec<DVec2>> = boundary_loops(&triangles)
             .iter()
-            .map(|ring| ring.iter().map(|&v| to_frame(surface.positions()[v as usize])).collect())
+            .map(|ring| ring.iter().map(|&v| frame.flat(surface.positions()[v as usize])).collect())
             .collect();
         let (outers, holes): (Vec<Vec<DVec2>>, Vec<Vec<DVec2>>) =
             rings.into_iter().partition(|ring| signed_area(ring) > 0.0);
@@ -102,27 +99,53 @@ impl FlatCap {
             home.holes.push(hole);
         }
         let outline = Region::new(polygons);
-        let mut prism = extrude(&offset(&outline, -RIM_INSET_MM), below_mm + above_mm).ok()?;
-        for v in &mut prism.vertices {
-            let p = origin + x_axis * v[0] + y_axis * v[1] + normal * (v[2] - below_mm);
-            *v = p.to_array();
-        }
+        let prism = frame.prism(&offset(&outline, -RIM_INSET_MM), -below_mm, above_mm)?;
         let bounds = prism.vertices.iter().fold((DVec3::INFINITY, DVec3::NEG_INFINITY), |(lo, hi), &v| {
             (lo.min(DVec3::from_array(v)), hi.max(DVec3::from_array(v)))
         });
-        Some(FlatCap { origin, normal, x_axis, y_axis, outline, prism, bounds })
+        Some(FlatCap { frame, outline, prism, bounds })
+    }
+
+    /// Whether `p` lies within `margin_mm` of the cap's outline, seen along
+    /// its normal.
+    fn covers_within(&self, p: DVec3, margin_mm: f64) -> bool {
+        let flat = self.frame.flat(p);
+        self.outline.contains(flat)
+            || self.outline.polygons.iter().any(|polygon| polygon.outline_distance(flat) <= margin_mm)
     }
 
     /// Whether `p` lies within the cap's outline, seen along its normal.
     fn covers(&self, p: DVec3) -> bool {
-        let flat = DVec2::new((p - self.origin).dot(self.x_axis), (p - self.origin).dot(self.y_axis));
-        self.outline.contains(flat)
-            || self.outline.polygons.iter().any(|polygon| polygon.outline_distance(flat) <= EDGE_TOLERANCE_MM)
+        self.covers_within(p, EDGE_TOLERANCE_MM)
     }
 
     /// The outward normal of the cap's plane.
     pub fn normal(&self) -> DVec3 {
-        self.normal
+        self.frame.normal
+    }
+
+    /// How far `p` lies above the cap's plane (along its outward normal), mm.
+    pub fn height(&self, p: DVec3) -> f64 {
+        (p - self.frame.origin).dot(self.frame.normal)
+    }
+
+    /// `element`, a thread laid on the side below the cap and on past its
+    /// rim, cut off flat `depth_mm` under the cap's plane: its pieces of at
+    /// least `min_volume_mm3` that are solids. Empty if the cut fails.
+    pub fn cut_under(&self, element: &Element, depth_mm: f64, min_volume_mm3: f64) -> Vec<Element> {
+        let (mut lo, mut hi) = (DVec2::INFINITY, DVec2::NEG_INFINITY);
+        let mut top: f64 = 0.0;
+        for &p in &element.vertices {
+            let flat = self.frame.flat(p);
+            (lo, hi) = (lo.min(flat), hi.max(flat));
+            top = top.max(self.height(p));
+        }
+        // A box wider than the element, from the cut up past its top.
+        let square = Region::rectangle(&Rect::new(lo - DVec2::ONE, hi + DVec2::ONE));
+        let Some(above) = self.frame.prism(&square, -depth_mm, top + 1.0) else { return Vec::new() };
+        difference_solids(&element.to_mesh(), &above)
+            .map(|mesh| solid_pieces(&mesh, min_volume_mm3).0)
+            .unwrap_or_default()
     }
 
     /// `element`, laid in the cap's plane, fitted to the cap: whole if it
@@ -197,7 +220,7 @@ impl FlatCaps {
             let bounds = e.bounds();
             let home = self.caps.iter().find(|cap| {
                 boxes_overlap(bounds, cap.bounds)
-                    && e.vertices.iter().all(|&p| (p - cap.origin).dot(cap.normal) >= -below_mm)
+                    && e.vertices.iter().all(|&p| cap.height(p) >= -below_mm)
                     && 2 * e.vertices.iter().filter(|&&p| cap.covers(p)).count() > e.vertices.len()
             });
             match home {
@@ -212,8 +235,41 @@ impl FlatCaps {
         cut
     }
 
+    /// The flat cap whose plane `p` lies above, within `margin_mm` of its
+    /// rim seen along its normal: where a point of the side carried on
+    /// past the rim has gone.
+    pub fn above(&self, p: DVec3, margin_mm: f64) -> Option<&FlatCap> {
+        self.caps.iter().find(|cap| cap.height(p) > 0.0 && cap.covers_within(p, margin_mm))
+    }
+
     /// The flat cap face `f` lies on, if any.
     pub fn of_face(&self, f: u32) -> Option<&FlatCap> {
         self.cap_of_face.get(f as usize).copied().flatten().map(|c| &self.caps[c as usize])
+    }
+}
+
+/// A cap's plane and a frame in it, `x_axis × y_axis = normal`.
+struct Frame {
+    origin: DVec3,
+    normal: DVec3,
+    x_axis: DVec3,
+    y_axis: DVec3,
+}
+
+impl Frame {
+    /// `p` seen along the normal, in the frame.
+    fn flat(&self, p: DVec3) -> DVec2 {
+        DVec2::new((p - self.origin).dot(self.x_axis), (p - self.origin).dot(self.y_axis))
+    }
+
+    /// `region` (in the frame) from `from_mm` to `to_mm` above the plane,
+    /// as a closed mesh in space.
+    fn prism(&self, region: &Region, from_mm: f64, to_mm: f64) -> Option<Mesh> {
+        let mut prism = extrude(region, to_mm - from_mm).ok()?;
+        for v in &mut prism.vertices {
+            let p = self.origin + self.x_axis * v[0] + self.y_axis * v[1] + self.normal * (v[2] + from_mm);
+            *v = p.to_array();
+        }
+        Some(prism)
     }
 }

@@ -256,6 +256,26 @@ impl Patch {
         corners[0] + jacobian.du * d.x + jacobian.dv * d.y
     }
 
+    /// Where the flat point `p`, perhaps past the patch's edge, lands on
+    /// the patch's nearest triangle carried on flat past its edges, with
+    /// that face's normal: for what reaches only a little past the edge.
+    pub fn carried_on(&self, surface: &SurfaceMesh, p: DVec2) -> (DVec3, DVec3) {
+        let centre = |t: &[u32; 3]| t.iter().map(|&v| self.uv[v as usize]).sum::<DVec2>() / 3.0;
+        let nearest = (0..self.triangles.len())
+            .min_by(|&a, &b| {
+                centre(&self.triangles[a])
+                    .distance_squared(p)
+                    .total_cmp(&centre(&self.triangles[b]).distance_squared(p))
+            })
+            .unwrap_or(self.seed_local);
+        let face = self.faces[nearest];
+        let corners = surface.triangles()[face as usize].map(|v| surface.positions()[v as usize]);
+        let flat = self.triangles[nearest].map(|v| self.uv[v as usize]);
+        let jacobian = Jacobian::of(corners, flat);
+        let d = p - flat[0];
+        (corners[0] + jacobian.du * d.x + jacobian.dv * d.y, surface.face_normal(face))
+    }
+
     /// The base's `u` direction (unit, tangent) over face `face`, if in the patch.
     pub fn u_axis(&self, face: u32) -> Option<DVec3> {
         self.local_of_face.get(&face).map(|&t| self.u_axis[t as usize])

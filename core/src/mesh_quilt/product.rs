@@ -129,6 +129,7 @@ pub fn make_surface_product(
         facts.push("max_patch_area_distortion", Fact::Number(shell.max_patch_distortion));
         facts.push("bare_seeds", Fact::Count(shell.bare_seeds));
         facts.push("cut_at_rim", Fact::Count(shell.cut_at_rim));
+        facts.push("cut_under_rim", Fact::Count(shell.cut_under_rim));
     }
     Ok(product)
 }
