@@ -63,6 +63,12 @@ fn every_builtin_along_lines_loops_and_waves() {
                 let target: f64 = field(&json, "target_length_mm").parse().unwrap();
                 let length: f64 = field(&json, "length_mm").parse().unwrap();
                 assert!((target - length).abs() < 1e-6 * target, "{context}: length {length} for {target}");
+                // The stitching's worst deformation is reported (its values
+                // are checked against the geometry in core/tests/distortion.rs).
+                let stretch: f64 = field(&json, "piece_stretch_max").parse().unwrap();
+                let shear: f64 = field(&json, "piece_shear_max_deg").parse().unwrap();
+                assert!((1.0..1000.0).contains(&stretch), "{context}: stretch {stretch}");
+                assert!((0.0..90.0).contains(&shear), "{context}: shear {shear}°");
 
                 let check = check_stl(&stl);
                 assert_eq!(check.open_edges, 0, "{context}: STL not watertight {check:?}");

@@ -12,7 +12,7 @@
 //! the final geometry equals the plan and the target, how far the geometry
 //! strays from the curve (in half bands), the near period and longest repeat
 //! of the shape classes along the pattern, the seam tangent jump (and, for a short period, whether a much higher
-//! variety weight avoids it), and the
+//! variety weight avoids it), the stitching's worst stretch and shear of the pieces, and the
 //! time of the whole pipeline. The summary prints one row per curve.
 
 #[path = "common/sheet.rs"]
@@ -109,6 +109,9 @@ struct Run {
     period: f64,
     repeat: f64,
     seam_deg: f64,
+    /// The stitching's worst stretch and shear (degrees) of the pieces, as reported.
+    stretch: f64,
+    shear_deg: f64,
     pieces: usize,
     time_ms: f64,
     states: usize,
@@ -165,6 +168,8 @@ fn run_one(
         period: 1.0,
         repeat: 0.0,
         seam_deg: 0.0,
+        stretch: 0.0,
+        shear_deg: 0.0,
         pieces: 0,
         time_ms: 0.0,
         states: 0,
@@ -241,6 +246,8 @@ fn run_one(
     let band = &synthesis.band;
     let tolerance = 1e-6 * band.length;
     run.seam_deg = seam_kinks_deg(&band.region, &band.seams, tolerance).into_iter().fold(0.0, f64::max);
+    run.stretch = band.distortion.stretch_max();
+    run.shear_deg = band.distortion.shear_max_deg();
     run
 }
 
@@ -285,8 +292,8 @@ fn percentile(sorted: &[f64], q: f64) -> f64 {
 
 fn summary(runs: &[Run], curves: &[String]) -> String {
     let mut out = String::from(
-        "| curve | runs | answered | exact | none | cap | mesh | error | drift max | seam max ° | period < ⅓ | of which avoidable | p50 ms | p95 ms | max ms |\n\
-         |---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n",
+        "| curve | runs | answered | exact | none | cap | mesh | error | drift max | seam max ° | stretch p95 / max | shear p95 / max ° | period < ⅓ | of which avoidable | p50 ms | p95 ms | max ms |\n\
+         |---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n",
     );
     let mut rows: Vec<(String, Vec<&Run>)> =
         curves.iter().map(|c| (c.clone(), runs.iter().filter(|r| &r.curve == c).collect::<Vec<_>>())).collect();
@@ -297,8 +304,14 @@ fn summary(runs: &[Run], curves: &[String]) -> String {
         let mut times: Vec<f64> = rs.iter().map(|r| r.time_ms).collect();
         times.sort_by(f64::total_cmp);
         let periodic: Vec<&&&Run> = answered.iter().filter(|r| short_period(r)).collect();
+        let sorted = |f: fn(&Run) -> f64| {
+            let mut values: Vec<f64> = answered.iter().map(|r| f(r)).collect();
+            values.sort_by(f64::total_cmp);
+            values
+        };
+        let (stretches, shears) = (sorted(|r| r.stretch), sorted(|r| r.shear_deg));
         out += &format!(
-            "| {name} | {} | {} | {} | {} | {} | {} | {} | {:.2} | {:.1} | {} | {} | {:.1} | {:.1} | {:.1} |\n",
+            "| {name} | {} | {} | {} | {} | {} | {} | {} | {:.2} | {:.1} | {:.2} / {:.2} | {:.1} / {:.1} | {} | {} | {:.1} | {:.1} | {:.1} |\n",
             rs.len(),
             answered.len(),
             answered.iter().filter(|r| r.exact).count(),
@@ -308,6 +321,10 @@ fn summary(runs: &[Run], curves: &[String]) -> String {
             count("error"),
             answered.iter().map(|r| r.drift).fold(0.0, f64::max),
             answered.iter().map(|r| r.seam_deg).fold(0.0, f64::max),
+            percentile(&stretches, 0.95),
+            stretches.last().copied().unwrap_or(f64::NAN),
+            percentile(&shears, 0.95),
+            shears.last().copied().unwrap_or(f64::NAN),
             periodic.len(),
             periodic.iter().filter(|r| r.avoidable).count(),
             percentile(&times, 0.5),
@@ -343,7 +360,7 @@ fn main() {
         .collect();
     let mut runs = Vec::new();
     let mut csv = String::from(
-        "ornament,curve,target,status,exact,drift,period,repeat,seam_deg,pieces,time_ms,states,stages,matching,auto,avoidable,reason\n",
+        "ornament,curve,target,status,exact,drift,period,repeat,seam_deg,stretch,shear_deg,pieces,time_ms,states,stages,matching,auto,avoidable,reason\n",
     );
     let started = Instant::now();
     for file in &files {
@@ -362,7 +379,7 @@ fn main() {
                     r.avoidable = probe.status == "ok" && !short_period(&probe);
                 }
                 csv += &format!(
-                    "{},{},{},{},{},{:.3},{:.3},{:.3},{:.2},{},{:.2},{},{},{:.4},{:.2},{},\"{}\"\n",
+                    "{},{},{},{},{},{:.3},{:.3},{:.3},{:.2},{:.3},{:.2},{},{:.2},{},{},{:.4},{:.2},{},\"{}\"\n",
                     r.ornament,
                     r.curve,
                     r.target,
@@ -372,6 +389,8 @@ fn main() {
                     r.period,
                     r.repeat,
                     r.seam_deg,
+                    r.stretch,
+                    r.shear_deg,
                     r.pieces,
                     r.time_ms,
                     r.states,

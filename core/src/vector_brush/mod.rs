@@ -22,6 +22,7 @@
 mod autocorrelation;
 mod builtin;
 mod descriptor;
+mod distortion;
 mod error;
 pub mod exemplar;
 mod growing;
@@ -41,6 +42,7 @@ mod stitching;
 pub use autocorrelation::{Autocorrelation, LAGS, Similarity};
 pub use builtin::{BUILTIN_NAMES, builtin, builtin_svg};
 pub use descriptor::{LoopTopology, PortalId, PortalIds, TopologyDescriptor};
+pub use distortion::{Distortion, SAMPLES_PER_PIECE};
 pub use error::{ExemplarError, SliceError, SolveError, Unmet};
 pub use exemplar::{Exemplar, LoadOptions};
 pub use growing::Growing;

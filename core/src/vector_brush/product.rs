@@ -154,6 +154,9 @@ pub(crate) fn to_product(
     // how much the outline turns at a seam beyond its turn around it.
     let kinks = timings.time("seam check", || seam_kinks_deg(&band.region, &band.seams, 1e-6 * band.length));
     facts.push("seam_kink_max_deg", Fact::Number(kinks.into_iter().fold(0.0, f64::max)));
+    // The pieces' worst deformation by stitching, in band space too.
+    facts.push("piece_stretch_max", Fact::Number(band.distortion.stretch_max()));
+    facts.push("piece_shear_max_deg", Fact::Number(band.distortion.shear_max_deg()));
     Ok(Product {
         fill_mm,
         region_mm: planar.region,

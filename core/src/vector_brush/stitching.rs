@@ -17,11 +17,15 @@
 //! Matched endpoints therefore coincide exactly, the portal segments of both
 //! sides lie on the same seam line, and tangents agree: no gap, no overlap, no
 //! kink. Monotone maps keep every piece free of fold-overs.
+//!
+//! While each piece is mapped, the map's Jacobian is sampled along its outline
+//! ([`Distortion`]), so that the report can say how much the pieces were
+//! stretched and sheared.
 
 use glam::DVec2;
 use serde::{Deserialize, Serialize};
 
-use super::{CurveKind, PieceSet};
+use super::{CurveKind, Distortion, PieceSet};
 use rayon::prelude::*;
 
 use crate::geom::{Polygon, Region, refine_mapped_thinned, union};
@@ -38,6 +42,10 @@ pub struct BandPattern {
     pub seams: Vec<f64>,
     /// Whether the pattern is for a loop (`u = 0` and `u = length` are the same line).
     pub curve: CurveKind,
+    /// How much stitching (and [`BandPattern::fit_within`]) deformed the
+    /// pieces, sampled along their outlines. Bending along the curve comes
+    /// after and is not in it.
+    pub distortion: Distortion,
 }
 
 impl BandPattern {
@@ -55,6 +63,7 @@ impl BandPattern {
         }
         let factor = limit / extent;
         self.region = self.region.map_points(|p| DVec2::new(p.x, p.y * factor));
+        self.distortion.scale_across(factor);
         factor
     }
 }
@@ -279,7 +288,7 @@ pub fn stitch(
         CurveKind::Closed => joined(if k == 0 { n } else { k }).is_none(),
     };
     // Each piece is deformed on its own, so pieces go to every core.
-    let deformed = |(i, piece): (usize, &&super::Piece)| -> Vec<Polygon> {
+    let deformed = |(i, piece): (usize, &&super::Piece)| -> (Vec<Polygon>, Distortion) {
         let (x_min, x_max) = piece.region.bounds().map_or((f64::INFINITY, f64::NEG_INFINITY), |b| (b.min.x, b.max.x));
         let left_gap = if is_break(i) { (0.5 * gap - (x_min - piece.u_start)).max(0.0) } else { 0.0 };
         let right_gap = if is_break(i + 1) { (0.5 * gap - (piece.u_end() - x_max)).max(0.0) } else { 0.0 };
@@ -291,6 +300,7 @@ pub fn stitch(
         let (u0, u1) = (seam_u[i] + left_gap * stretch, seam_u[i + 1] - right_gap * stretch);
         let width = u1 - u0;
         let radius = 0.3 * width;
+
         // Long edges are split first, so that a bend between their ends is seen.
         let max_step = (piece.width / 2.0).min(set.exemplar_height / 4.0).max(1e-9);
         let tolerance = tolerance.max(1e-9 * set.exemplar_height);
@@ -349,15 +359,27 @@ pub fn stitch(
             DVec2::new(u, v)
         };
         let deform = |ring: &Vec<DVec2>| refine_mapped_thinned(ring, place, max_step, tolerance, 0.5 * tolerance);
-        piece
+        let polygons = piece
             .region
             .polygons
             .iter()
             .map(|polygon| Polygon { outer: deform(&polygon.outer), holes: polygon.holes.iter().map(deform).collect() })
-            .collect()
+            .collect();
+        // Sampled clear of the cuts, where `place` snaps points onto the
+        // seam line; the step is far below any feature and far above the
+        // rounding of `place`.
+        let distortion = Distortion::sample(
+            &piece.region.polygons,
+            (piece.u_start, piece.u_end()),
+            (4.0 * snap).max(1e-3 * piece.width),
+            1e-5 * set.exemplar_height,
+            place,
+        );
+        (polygons, distortion)
     };
-    let polygons: Vec<Polygon> = pieces.par_iter().enumerate().flat_map_iter(deformed).collect();
-    let region = union(&[&Region::new(polygons)]);
+    let (polygons, distortions): (Vec<Vec<Polygon>>, Vec<Distortion>) =
+        pieces.par_iter().enumerate().map(deformed).unzip();
+    let region = union(&[&Region::new(polygons.into_iter().flatten().collect())]);
     let seams = seam_u[1..n].to_vec();
-    BandPattern { region, length, seams, curve }
+    BandPattern { region, length, seams, curve, distortion: Distortion::join(distortions) }
 }
