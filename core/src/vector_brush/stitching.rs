@@ -300,7 +300,6 @@ pub fn stitch(
         let (u0, u1) = (seam_u[i] + left_gap * stretch, seam_u[i + 1] - right_gap * stretch);
         let width = u1 - u0;
         let radius = 0.3 * width;
-
         // Long edges are split first, so that a bend between their ends is seen.
         let max_step = (piece.width / 2.0).min(set.exemplar_height / 4.0).max(1e-9);
         let tolerance = tolerance.max(1e-9 * set.exemplar_height);
