@@ -6,6 +6,7 @@
 use std::collections::HashMap;
 
 use glam::DVec3;
+use rayon::prelude::*;
 
 use super::cut::{FORCED, min_cut_keep};
 use super::deform::{Constraint, deform};
@@ -134,8 +135,11 @@ pub(super) fn merge_patch(
     let in_faces = Faces::new(&placed);
     let to_in = |p: DVec3, max_mm: f64| in_faces.closest_within(p, max_mm);
     let to_out = |p: DVec3, max_mm: f64| closest_among(&out_faces, p, max_mm);
-    let forward: Vec<Vec<Pair>> = near.iter().map(|&k| pairs(&output[k], to_in, reach_mm, in_patch)).collect();
-    let backward: Vec<Vec<Pair>> = placed.iter().map(|e| pairs(e, to_out, reach_mm, |_| true)).collect();
+    // Every element's pairs, and below every pair's merge, depend only on
+    // the output as it was before this patch: they go to every core.
+    let current: &[Element] = output;
+    let forward: Vec<Vec<Pair>> = near.par_iter().map(|&k| pairs(&current[k], to_in, reach_mm, in_patch)).collect();
+    let backward: Vec<Vec<Pair>> = placed.par_iter().map(|e| pairs(e, to_out, reach_mm, |_| true)).collect();
     let mut related: HashMap<(usize, usize), usize> = HashMap::new();
     for (o, list) in forward.iter().enumerate() {
         for p in list {
@@ -169,21 +173,32 @@ pub(super) fn merge_patch(
         .collect();
     // Each change says whether its swatch element is a thread, which may
     // bend over and under what it would cross.
-    let mut changes: Vec<(Option<usize>, Element, bool)> = Vec::new();
-    for (i, element) in placed.iter().enumerate() {
-        let Some(&o) = matched.get(&i) else {
-            counts.added += 1;
-            changes.push((None, element.clone(), element.is_thread()));
-            continue;
-        };
-        let k = near[o];
-        let to_in: Vec<Pair> = forward[o].iter().filter(|p| p.other == i).copied().collect();
-        let to_out: Vec<Pair> = backward[i].iter().filter(|p| p.other == o).copied().collect();
-        match merge_pair(&output[k], element, &to_in, &to_out, grid, settings.mu, reach_mm, &mut counts) {
-            Merged::Out => {}
-            Merged::In => changes.push((Some(k), element.clone(), element.is_thread())),
-            Merged::Stitched(e) => changes.push((Some(k), e, element.is_thread())),
-        }
+    // In the placed elements' order, whatever core merged each.
+    let merged: Vec<(Option<(Option<usize>, Element, bool)>, MergeCounts)> = placed
+        .par_iter()
+        .enumerate()
+        .map(|(i, element)| {
+            let mut counts = MergeCounts::default();
+            let Some(&o) = matched.get(&i) else {
+                counts.added += 1;
+                return (Some((None, element.clone(), element.is_thread())), counts);
+            };
+            let k = near[o];
+            let to_in: Vec<Pair> = forward[o].iter().filter(|p| p.other == i).copied().collect();
+            let to_out: Vec<Pair> = backward[i].iter().filter(|p| p.other == o).copied().collect();
+            let change =
+                match merge_pair(&current[k], element, &to_in, &to_out, grid, settings.mu, reach_mm, &mut counts) {
+                    Merged::Out => None,
+                    Merged::In => Some((Some(k), element.clone(), element.is_thread())),
+                    Merged::Stitched(e) => Some((Some(k), e, element.is_thread())),
+                };
+            (change, counts)
+        })
+        .collect();
+    let mut changes: Vec<(Option<usize>, Element, bool)> = Vec::with_capacity(merged.len());
+    for (change, merge_counts) in merged {
+        counts.add(&merge_counts);
+        changes.extend(change);
     }
     // Nothing goes in that would cross what is there: the print would not
     // be sound.
