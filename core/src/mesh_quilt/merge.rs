@@ -69,6 +69,10 @@ impl MergeCounts {
     }
 }
 
+/// An element to admit into the output: the output element it replaces
+/// (none when it is added), the element, and whether it is a thread.
+type Change = (Option<usize>, Element, bool);
+
 /// A vertex of one element close to a face of another.
 #[derive(Clone, Copy, Debug)]
 struct Pair {
@@ -172,9 +176,9 @@ pub(super) fn merge_patch(
         .map(|(&i, &(o, _))| (i, o))
         .collect();
     // Each change says whether its swatch element is a thread, which may
-    // bend over and under what it would cross.
-    // In the placed elements' order, whatever core merged each.
-    let merged: Vec<(Option<(Option<usize>, Element, bool)>, MergeCounts)> = placed
+    // bend over and under what it would cross. Changes come in the placed
+    // elements' order, whatever core merged each.
+    let merged: Vec<(Option<Change>, MergeCounts)> = placed
         .par_iter()
         .enumerate()
         .map(|(i, element)| {
@@ -195,7 +199,7 @@ pub(super) fn merge_patch(
             (change, counts)
         })
         .collect();
-    let mut changes: Vec<(Option<usize>, Element, bool)> = Vec::with_capacity(merged.len());
+    let mut changes: Vec<Change> = Vec::with_capacity(merged.len());
     for (change, merge_counts) in merged {
         counts.add(&merge_counts);
         changes.extend(change);
