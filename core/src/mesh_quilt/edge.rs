@@ -5,6 +5,7 @@
 //! fall out of the mail, and half a rivet a loose crumb.
 
 use glam::{DVec2, DVec3};
+use rayon::prelude::*;
 
 use super::Element;
 use super::foot::cuboid;
@@ -27,6 +28,10 @@ pub struct EdgeTrimmed {
     /// not a solid the booleans take.
     pub crumbs: usize,
 }
+
+/// What is kept of one element at the edge: its pieces, whether it was
+/// cut, and how many crumbs the cut left.
+type TrimmedElement = (Vec<Element>, bool, usize);
 
 /// Cuts every thread (an element at least [`THREAD_ASPECT`] times as long
 /// as wide) that reaches past the area from `(0, 0)` to
@@ -57,9 +62,9 @@ pub fn trim_to_area(
     min_volume_mm3: f64,
 ) -> Result<EdgeTrimmed, BooleanError> {
     let area = (DVec2::ZERO, DVec2::new(width_mm, depth_mm));
-    let mut trimmed = EdgeTrimmed::default();
-    let mut kept = Vec::with_capacity(elements.len());
-    for e in elements.drain(..) {
+    // Each element is cut on its own, so elements go to every core; the
+    // pieces keep the elements' order.
+    let trim = |e: Element| -> Result<TrimmedElement, BooleanError> {
         let (lo, hi) = e.bounds();
         let size = (hi - lo).truncate();
         let outside = lo.x < area.0.x - EDGE_TOLERANCE_MM
@@ -67,8 +72,7 @@ pub fn trim_to_area(
             || hi.x > area.1.x + EDGE_TOLERANCE_MM
             || hi.y > area.1.y + EDGE_TOLERANCE_MM;
         if !outside || size.max_element() < THREAD_ASPECT * size.min_element() {
-            kept.push(e);
-            continue;
+            return Ok((vec![e], false, 0));
         }
         // Boxes wider than the element on every side, so no face of a box
         // meets one of the element's but the edge it stands for.
@@ -85,11 +89,17 @@ pub fn trim_to_area(
             mesh = difference_solids(&mesh, &cuboid(from, to))?;
         }
         let (pieces, crumbs) = solid_pieces(&mesh, min_volume_mm3);
-        trimmed.cut += 1;
+        Ok((pieces, true, crumbs))
+    };
+    let results: Vec<Result<TrimmedElement, BooleanError>> =
+        std::mem::take(elements).into_par_iter().map(trim).collect();
+    let mut trimmed = EdgeTrimmed::default();
+    for result in results {
+        let (pieces, cut, crumbs) = result?;
+        trimmed.cut += usize::from(cut);
         trimmed.crumbs += crumbs;
-        kept.extend(pieces);
+        elements.extend(pieces);
     }
-    *elements = kept;
     Ok(trimmed)
 }
 
