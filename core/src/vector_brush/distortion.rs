@@ -42,13 +42,12 @@ impl Distortion {
         Distortion { jacobians }
     }
 
-    /// Samples `map` along the outline of `polygons`: at most
-    /// [`SAMPLES_PER_PIECE`] points, evenly spaced along the rings, each with
-    /// forward differences of step `step` taken towards `inside` (a point the
-    /// differences must not cross away from, such as the middle of a piece,
-    /// so that a sample on a cut does not difference across it). Points
-    /// closer than `margin_x` to `x_min` or `x_max` are skipped: the map snaps
-    /// there.
+    /// Samples `map` along the outline of `polygons`, a piece spanning
+    /// `x_min..x_max`: at most [`SAMPLES_PER_PIECE`] points, evenly spaced
+    /// along the rings, each with forward differences of step `step`, the
+    /// one along `x` taken towards the piece's middle so that it never
+    /// crosses a cut. Points closer than `margin_x` to `x_min` or `x_max` are
+    /// skipped: the map snaps there.
     pub(crate) fn sample(
         polygons: &[Polygon],
         (x_min, x_max): (f64, f64),
