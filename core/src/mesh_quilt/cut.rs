@@ -2,7 +2,8 @@
 //! paper's section 2.7): a minimum cut on the dual graph, through
 //! `petgraph`'s Dinic maximum flow.
 
-use std::collections::{HashMap, VecDeque};
+use rustc_hash::FxHashMap;
+use std::collections::VecDeque;
 
 use petgraph::algo::dinics;
 use petgraph::graph::{DiGraph, NodeIndex};
@@ -31,7 +32,7 @@ pub fn min_cut_keep(
     drop: &[(u32, i64)],
 ) -> Option<Vec<bool>> {
     let (source, sink) = (triangles, triangles + 1);
-    let mut caps: HashMap<(usize, usize), i64> = HashMap::new();
+    let mut caps: FxHashMap<(usize, usize), i64> = FxHashMap::default();
     for &(a, b, w) in weights {
         *caps.entry((a as usize, b as usize)).or_default() += w;
         *caps.entry((b as usize, a as usize)).or_default() += w;

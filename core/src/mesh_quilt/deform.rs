@@ -2,7 +2,7 @@
 //! position constraints while its Laplacian coordinates, its local shape,
 //! stay as they were. A sparse least-squares solve through faer.
 
-use std::collections::HashMap;
+use rustc_hash::FxHashMap;
 
 use faer::Mat;
 use faer::prelude::Solve;
@@ -54,7 +54,7 @@ pub fn deform(element: &mut Element, constraints: &[Constraint], fixed: impl Fn(
         return false;
     }
     let ring = element.neighbours();
-    let mut normal: HashMap<(usize, usize), f64> = HashMap::new();
+    let mut normal: FxHashMap<(usize, usize), f64> = FxHashMap::default();
     let mut rhs = Mat::<f64>::zeros(count, 3);
     // Rows of L (the vertex minus the mean of its neighbours) that touch a
     // free vertex; fixed vertices in them move to the right-hand side.

@@ -1,7 +1,7 @@
 //! [`Element`]: one geometric element of a swatch or of the output, a
 //! connected triangle mesh (a chain link, a thread, a rivet).
 
-use std::collections::HashMap;
+use rustc_hash::FxHashMap;
 
 use glam::{DVec2, DVec3};
 
@@ -136,7 +136,7 @@ impl Element {
 
     /// For each triangle, the triangles sharing an edge with it.
     pub fn face_neighbours(&self) -> Vec<Vec<u32>> {
-        let mut by_edge: HashMap<(u32, u32), Vec<u32>> = HashMap::new();
+        let mut by_edge: FxHashMap<(u32, u32), Vec<u32>> = FxHashMap::default();
         for (f, t) in self.triangles.iter().enumerate() {
             for k in 0..3 {
                 let (a, b) = (t[k], t[(k + 1) % 3]);

@@ -6,7 +6,7 @@
 //! runs in a patch laid flat, and the swatch's points are carried to the
 //! output through the patch.
 
-use std::collections::HashMap;
+use rustc_hash::FxHashMap;
 use std::sync::atomic::{AtomicU64, Ordering};
 
 use glam::{DVec2, DVec3};
@@ -27,7 +27,7 @@ pub(super) const MARGIN_CELLS: i64 = 1;
 /// The swatch indexed for matching: its faces, and its vertices by cell.
 pub(super) struct Input {
     pub faces: Faces,
-    by_cell: HashMap<(i64, i64), Vec<(DVec3, DVec3)>>,
+    by_cell: FxHashMap<(i64, i64), Vec<(DVec3, DVec3)>>,
     /// Whole cells across the swatch, along `x` and `y`.
     pub cells: (i64, i64),
     pub cell_mm: f64,
@@ -36,7 +36,7 @@ pub(super) struct Input {
 impl Input {
     /// `swatch` indexed on cells `cell_mm` wide.
     pub fn new(swatch: &Swatch, cell_mm: f64) -> Input {
-        let mut by_cell: HashMap<(i64, i64), Vec<(DVec3, DVec3)>> = HashMap::new();
+        let mut by_cell: FxHashMap<(i64, i64), Vec<(DVec3, DVec3)>> = FxHashMap::default();
         for e in &swatch.elements {
             for (v, n) in e.vertices.iter().zip(e.vertex_normals()) {
                 let c = ((v.x / cell_mm).floor() as i64, (v.y / cell_mm).floor() as i64);

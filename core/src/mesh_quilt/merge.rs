@@ -3,7 +3,7 @@
 //! both sides towards each other, then for each corresponding pair either
 //! one element whole or the two stitched along a graph cut.
 
-use std::collections::HashMap;
+use rustc_hash::FxHashMap;
 
 use glam::DVec3;
 use rayon::prelude::*;
@@ -144,7 +144,7 @@ pub(super) fn merge_patch(
     let current: &[Element] = output;
     let forward: Vec<Vec<Pair>> = near.par_iter().map(|&k| pairs(&current[k], to_in, reach_mm, in_patch)).collect();
     let backward: Vec<Vec<Pair>> = placed.par_iter().map(|e| pairs(e, to_out, reach_mm, |_| true)).collect();
-    let mut related: HashMap<(usize, usize), usize> = HashMap::new();
+    let mut related: FxHashMap<(usize, usize), usize> = FxHashMap::default();
     for (o, list) in forward.iter().enumerate() {
         for p in list {
             *related.entry((o, p.other)).or_default() += 1;
@@ -158,8 +158,8 @@ pub(super) fn merge_patch(
     // Each element corresponds to the one it has most pairs with, when that
     // one returns the favour: a ring interlocked with another is near it,
     // but nearer its own twin.
-    let mut best_in: HashMap<usize, (usize, usize)> = HashMap::new();
-    let mut best_out: HashMap<usize, (usize, usize)> = HashMap::new();
+    let mut best_in: FxHashMap<usize, (usize, usize)> = FxHashMap::default();
+    let mut best_out: FxHashMap<usize, (usize, usize)> = FxHashMap::default();
     let mut links: Vec<((usize, usize), usize)> = related.into_iter().filter(|(_, n)| *n >= MIN_PAIRS).collect();
     links.sort_unstable();
     for &((o, i), n) in &links {
@@ -170,7 +170,7 @@ pub(super) fn merge_patch(
             best_out.insert(i, (o, n));
         }
     }
-    let matched: HashMap<usize, usize> = best_out
+    let matched: FxHashMap<usize, usize> = best_out
         .iter()
         .filter(|&(&i, &(o, _))| best_in.get(&o).is_some_and(|&(j, _)| j == i))
         .map(|(&i, &(o, _))| (i, o))
@@ -284,7 +284,7 @@ fn meet(element: &mut Element, pairs: &[Pair], anchored: impl Fn(DVec3) -> bool,
             weight: mu,
         })
         .collect();
-    let paired: std::collections::HashSet<u32> = pairs.iter().map(|p| p.vertex).collect();
+    let paired: rustc_hash::FxHashSet<u32> = pairs.iter().map(|p| p.vertex).collect();
     constraints.extend(
         (0..element.vertices.len() as u32)
             .filter(|v| !paired.contains(v) && anchored(element.vertices[*v as usize]))

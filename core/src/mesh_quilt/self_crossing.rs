@@ -4,7 +4,7 @@
 //! element; it is closed edge by edge, yet it prints wrong and the booleans
 //! refuse it.
 
-use std::collections::HashMap;
+use rustc_hash::FxHashMap;
 
 use glam::DVec3;
 
@@ -59,7 +59,7 @@ pub fn crossing_pairs(element: &Element, most: usize) -> Vec<(u32, u32)> {
             (a.min(b).min(c), a.max(b).max(c))
         })
         .collect();
-    let mut grid: HashMap<(i64, i64, i64), Vec<u32>> = HashMap::new();
+    let mut grid: FxHashMap<(i64, i64, i64), Vec<u32>> = FxHashMap::default();
     let mut large: Vec<usize> = Vec::new();
     for (t, &(lo, hi)) in boxes.iter().enumerate() {
         let (a, b) = (key(lo), key(hi));

@@ -1,7 +1,7 @@
 //! [`Swatch`]: the 3D texture sample, split into its elements (connected
 //! components), checked, and laid with its thinnest side up.
 
-use std::collections::HashMap;
+use rustc_hash::FxHashMap;
 
 use glam::DVec3;
 
@@ -44,7 +44,7 @@ impl Swatch {
         if mesh.triangles.len() > MAX_SWATCH_TRIANGLES {
             return Err(QuiltError::SwatchTooLarge { triangles: mesh.triangles.len(), max: MAX_SWATCH_TRIANGLES });
         }
-        let mut by_edge: HashMap<(u32, u32), Vec<usize>> = HashMap::new();
+        let mut by_edge: FxHashMap<(u32, u32), Vec<usize>> = FxHashMap::default();
         for (f, t) in mesh.triangles.iter().enumerate() {
             for k in 0..3 {
                 let (a, b) = (t[k], t[(k + 1) % 3]);
