@@ -7,7 +7,7 @@ use std::io::Cursor;
 use tracery_core::control::Control;
 use tracery_core::curve::Along;
 use tracery_core::export::{SvgFlavour, SvgOptions, ThreeMfObject, object_colour, write_3mf, write_svg};
-use tracery_core::geom::Region;
+use tracery_core::geom::{Region, polyline_distance};
 use tracery_core::mesh::Mesh;
 use tracery_core::vector_brush::{Settings, builtin, make_product};
 use tracery_core::{DVec2, Product};
@@ -91,11 +91,25 @@ fn read_cut_svg(svg: &str) -> (Vec<Vec<DVec2>>, bool) {
                     ring.push(DVec2::new(p.x as f64, p.y as f64));
                 }
                 S::LineTo(p) => ring.push(DVec2::new(p.x as f64, p.y as f64)),
+                // Curves read as 16 chords each, by the Bézier formula itself.
+                S::CubicTo(c1, c2, p) => {
+                    let a = *ring.last().expect("a curve starts somewhere");
+                    let [b, c, d] = [c1, c2, p].map(|q| DVec2::new(q.x as f64, q.y as f64));
+                    for k in 1..=16 {
+                        let t = k as f64 / 16.0;
+                        let s = 1.0 - t;
+                        ring.push(a * s * s * s + b * 3.0 * s * s * t + c * 3.0 * s * t * t + d * t * t * t);
+                    }
+                }
                 S::Close => closed = true,
                 other => panic!("unexpected segment {other:?}"),
             }
         }
         assert!(closed, "every path is closed");
+        // A closing curve ends where the ring began.
+        if ring.len() > 1 && ring.first() == ring.last() {
+            ring.pop();
+        }
         rings.push(ring);
     }
     (rings, stroke_only)
@@ -185,4 +199,64 @@ fn kerf_moves_outlines_out_and_holes_in_by_half_of_it() {
 fn rings_perimeter(rings: &[Vec<DVec2>], with_area: &f64) -> f64 {
     let ring = rings.iter().find(|r| area(r) == *with_area).unwrap();
     tracery_core::geom::ring_perimeter(ring)
+}
+
+/// Joins where successive edges, both at least 20 µm long (after points
+/// within 5 µm of the last are merged), turn by 5° to 20°: facets anyone
+/// sees on a cut part; and all joins. A curve read back as 16 chords turns
+/// a sixteenth of its turn at each join; a chord's end turns it all.
+fn visible_facets(ring: &[DVec2]) -> (usize, usize) {
+    let mut kept: Vec<DVec2> = Vec::new();
+    for &p in ring {
+        if kept.last().is_none_or(|q| q.distance(p) >= 0.005) {
+            kept.push(p);
+        }
+    }
+    let n = kept.len();
+    let facets = (0..n)
+        .filter(|&k| {
+            let a = kept[k] - kept[(k + n - 1) % n];
+            let b = kept[(k + 1) % n] - kept[k];
+            let turn = a.angle_to(b).abs().to_degrees();
+            a.length() >= 0.02 && b.length() >= 0.02 && (5.0..=20.0).contains(&turn)
+        })
+        .count();
+    (facets, n)
+}
+
+#[test]
+fn a_cut_svg_follows_curves_smoothly_through_the_outlines_vertices() {
+    let region: Region = product("lace", "line:80").region_mm;
+    let (rings, _) = read_cut_svg(&write_svg(&region, &SvgOptions::new(SvgFlavour::Cut)));
+    let (chords, _) = read_cut_svg(&write_svg(&region, &SvgOptions::new(SvgFlavour::Cut).with_smooth_curves(false)));
+    assert_eq!(rings.len(), region.component_count() + region.hole_count());
+    // The page is the region's box with a 1 mm margin, y down.
+    let bounds = region.bounds().unwrap().inflate(1.0);
+    let to_page = |p: DVec2| DVec2::new(p.x - bounds.min.x, bounds.max.y - p.y);
+    let page_rings: Vec<Vec<DVec2>> = region.rings().map(|r| r.iter().map(|&p| to_page(p)).collect()).collect();
+    // Each of the pattern's vertices lies on the written outline (read
+    // back as 16 chords per curve, usvg's f32), and the outline strays from
+    // the pattern's own chords by no more than it takes to round them: a
+    // 3 mm hole drawn as a decagon has its chords 0.073 mm inside the circle.
+    let on_outline = |p: DVec2| rings.iter().map(|r| polyline_distance(r, true, p)).fold(f64::INFINITY, f64::min);
+    let to_chords = |p: DVec2| page_rings.iter().map(|r| polyline_distance(r, true, p)).fold(f64::INFINITY, f64::min);
+    let worst_vertex = page_rings.iter().flatten().map(|&p| on_outline(p)).fold(0.0, f64::max);
+    let worst_stray = rings.iter().flatten().map(|&p| to_chords(p)).fold(0.0, f64::max);
+    assert!(worst_vertex < 1e-4, "a vertex {worst_vertex} mm off the written outline");
+    assert!(worst_stray < 0.1, "the outline strays {worst_stray} mm from the pattern");
+    // Areas agree: nothing crossed or folded (holes come first, the outline
+    // last). Rounding the holes' chords out takes a little material.
+    let written: f64 = area(rings.last().unwrap()) - rings[..rings.len() - 1].iter().map(|r| area(r)).sum::<f64>();
+    assert!(
+        (written - region.area()).abs() < 0.015 * region.area(),
+        "{written} mm² written, {} mm² drawn",
+        region.area()
+    );
+    // The facets are gone: the straight chords show dozens (the holes'),
+    // the curves a tenth as many at most.
+    let count =
+        |rings: &[Vec<DVec2>]| rings.iter().map(|r| visible_facets(r)).fold((0, 0), |a, b| (a.0 + b.0, a.1 + b.1));
+    let (smooth, chord) = (count(&rings), count(&chords));
+    assert!(chord.0 >= 20, "the chords were expected to show facets: {chord:?}");
+    assert!(smooth.0 * 10 <= chord.0, "facets left: {smooth:?}, against {chord:?} with chords");
 }

@@ -6,7 +6,7 @@ use std::fmt::Write;
 use glam::DVec2;
 use serde::{Deserialize, Serialize};
 
-use crate::geom::{Rect, Region, offset, union};
+use crate::geom::{OutlineSegment, Rect, Region, SmoothOptions, SmoothRing, offset, smooth_region, union};
 
 /// Stroke colour of cut paths: laser software maps a colour to an operation.
 pub const CUT_COLOUR: &str = "#FF0000";
@@ -42,11 +42,17 @@ pub struct SvgOptions {
     /// Laser kerf, mm: outlines move out and holes move in by half of it,
     /// so that the cut part keeps its drawn size. Zero for none.
     pub kerf_mm: f64,
+    /// Outlines as cubic curves through the vertices where they are chords
+    /// of curves, so a laser does not cut the facets; corners and straight
+    /// runs stay as they are (see [`crate::geom::smooth_ring`]). Where
+    /// smoothing would make outlines touch or cross, the straight chords
+    /// are written instead.
+    pub smooth_curves: bool,
 }
 
 impl Default for SvgOptions {
     fn default() -> Self {
-        SvgOptions { flavour: SvgFlavour::Engrave, kerf_mm: 0.0 }
+        SvgOptions { flavour: SvgFlavour::Engrave, kerf_mm: 0.0, smooth_curves: true }
     }
 }
 
@@ -59,6 +65,11 @@ impl SvgOptions {
     /// With a kerf of `kerf_mm`.
     pub fn with_kerf_mm(self, kerf_mm: f64) -> Self {
         SvgOptions { kerf_mm, ..self }
+    }
+
+    /// With outlines written as smooth curves or as the straight chords.
+    pub fn with_smooth_curves(self, smooth_curves: bool) -> Self {
+        SvgOptions { smooth_curves, ..self }
     }
 }
 
@@ -107,11 +118,22 @@ pub fn write_svg(region: &Region, options: &SvgOptions) -> String {
     };
     let bounds = region.bounds().unwrap_or(Rect::new(DVec2::ZERO, DVec2::ONE)).inflate(MARGIN_MM);
     let (mut svg, to_page) = page(&bounds);
+    let smooth = if options.smooth_curves { smooth_region(&region, &SmoothOptions::default()) } else { None };
+    // Each polygon's rings, outline first, as path data.
+    let paths: Vec<Vec<Option<String>>> = region
+        .polygons
+        .iter()
+        .enumerate()
+        .map(|(k, polygon)| match &smooth {
+            Some(smooth) => smooth[k].iter().map(|ring| smooth_ring_path(ring, to_page)).collect(),
+            None => polygon.rings().map(|ring| ring_path(ring, to_page)).collect(),
+        })
+        .collect();
     match options.flavour {
         SvgFlavour::Engrave => {
             let _ = writeln!(svg, r#"  <g id="engrave">"#);
-            for polygon in &region.polygons {
-                let d: Vec<String> = polygon.rings().filter_map(|r| ring_path(r, to_page)).collect();
+            for rings in &paths {
+                let d: Vec<&str> = rings.iter().flatten().map(String::as_str).collect();
                 if !d.is_empty() {
                     let _ = writeln!(svg, r#"    <path fill="black" fill-rule="evenodd" d="{}"/>"#, d.join(" "));
                 }
@@ -119,14 +141,13 @@ pub fn write_svg(region: &Region, options: &SvgOptions) -> String {
         }
         SvgFlavour::Cut => {
             let _ = writeln!(svg, r#"  <g id="cut">"#);
-            for polygon in &region.polygons {
-                for ring in polygon.holes.iter().chain(std::iter::once(&polygon.outer)) {
-                    if let Some(d) = ring_path(ring, to_page) {
-                        let _ = writeln!(
-                            svg,
-                            r#"    <path fill="none" stroke="{CUT_COLOUR}" stroke-width="{HAIRLINE_MM}" d="{d}"/>"#
-                        );
-                    }
+            for rings in &paths {
+                // Holes first, then the outline around them.
+                for d in rings.iter().skip(1).chain(rings.first()).flatten() {
+                    let _ = writeln!(
+                        svg,
+                        r#"    <path fill="none" stroke="{CUT_COLOUR}" stroke-width="{HAIRLINE_MM}" d="{d}"/>"#
+                    );
                 }
             }
         }
@@ -168,6 +189,38 @@ fn ring_path(ring: &[DVec2], to_page: impl Fn(DVec2) -> DVec2) -> Option<String>
         return None;
     }
     Some(format!("M{} Z", points.join(" L")))
+}
+
+/// One closed subpath of lines and cubics, with segments whose end rounds
+/// to the written coordinates of the one before dropped. `None` when fewer
+/// than three distinct points remain.
+fn smooth_ring_path(ring: &SmoothRing, to_page: impl Fn(DVec2) -> DVec2) -> Option<String> {
+    let text = |p: DVec2| {
+        let q = to_page(p);
+        format!("{:.DECIMALS$},{:.DECIMALS$}", q.x, q.y)
+    };
+    let start = text(ring.start);
+    let mut last = start.clone();
+    let mut d = format!("M{start}");
+    let mut distinct = 1;
+    for (k, segment) in ring.segments.iter().enumerate() {
+        let end = text(segment.end());
+        if end == last {
+            continue;
+        }
+        // The closing straight edge is the `Z` itself.
+        let closing = k + 1 == ring.segments.len() && end == start;
+        match *segment {
+            OutlineSegment::Line(_) if closing => continue,
+            OutlineSegment::Line(_) => d += &format!(" L{end}"),
+            OutlineSegment::Cubic(c1, c2, _) => d += &format!(" C{} {} {end}", text(c1), text(c2)),
+        }
+        if !closing {
+            distinct += 1;
+        }
+        last = end;
+    }
+    (distinct >= 3).then(|| d + " Z")
 }
 
 /// Stroked paths as an SVG document for a pen plotter or a laser that

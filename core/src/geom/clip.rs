@@ -175,3 +175,51 @@ pub fn ring_crossing(ring: &[DVec2]) -> Option<DVec2> {
     }
     None
 }
+
+/// Which of `rings` (closed) cross or touch themselves or another: every
+/// ring with an edge that shares a point with an edge not its neighbour.
+/// Edges of all rings are swept in order of their left ends, as
+/// [`ring_crossing`] sweeps one ring's.
+///
+/// ```
+/// use tracery_core::DVec2;
+/// use tracery_core::geom::crossing_rings;
+/// let square = |x: f64| vec![DVec2::new(x, 0.0), DVec2::new(x + 1.0, 0.0), DVec2::new(x + 1.0, 1.0), DVec2::new(x, 1.0)];
+/// // The second square overlaps the first; the third is apart.
+/// assert_eq!(crossing_rings(&[square(0.0), square(0.5), square(3.0)]), vec![true, true, false]);
+/// ```
+pub fn crossing_rings(rings: &[Vec<DVec2>]) -> Vec<bool> {
+    let mut crossing = vec![false; rings.len()];
+    // (ring, edge) of every edge, by its left end.
+    let mut order: Vec<(usize, usize, f64)> = rings
+        .iter()
+        .enumerate()
+        .filter(|(_, ring)| ring.len() >= 2)
+        .flat_map(|(r, ring)| (0..ring.len()).map(move |i| (r, i, ring[i].x.min(ring[(i + 1) % ring.len()].x))))
+        .collect();
+    order.sort_by(|a, b| a.2.total_cmp(&b.2));
+    let edge = |r: usize, i: usize| [rings[r][i], rings[r][(i + 1) % rings[r].len()]];
+    for (k, &(r, i, _)) in order.iter().enumerate() {
+        let [a, b] = edge(r, i);
+        let (right, low, high) = (a.x.max(b.x), a.y.min(b.y), a.y.max(b.y));
+        for &(s, j, left) in &order[k + 1..] {
+            if left > right {
+                break;
+            }
+            if crossing[r] && crossing[s] {
+                continue;
+            }
+            let [c, d] = edge(s, j);
+            if c.y.max(d.y) < low || c.y.min(d.y) > high {
+                continue;
+            }
+            let n = rings[r].len();
+            let neighbours = r == s && ((i + 1) % n == j || (j + 1) % n == i);
+            if !neighbours && segments_cross([a, b], [c, d]) {
+                crossing[r] = true;
+                crossing[s] = true;
+            }
+        }
+    }
+    crossing
+}

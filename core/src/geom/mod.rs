@@ -1,6 +1,7 @@
 //! Planar geometry shared by every mode: polygons with holes ([`Region`]),
 //! rectangles, booleans (the only user of `i_overlay`), the independent
-//! topology count, polyline refinement and SVG path flattening.
+//! topology count, polyline refinement, SVG path flattening and smooth
+//! outlines for output.
 
 mod boolean;
 mod bridges;
@@ -18,6 +19,7 @@ mod rect;
 mod resolution;
 mod sanity;
 mod segment;
+mod smooth_outline;
 mod specks;
 mod stroke;
 mod topology;
@@ -29,7 +31,7 @@ pub use boolean::{FillRule, clip_to_rect, difference, intersection, resolve_cont
 pub use bridges::join_parts;
 pub(crate) use cdt_inside::faces_inside;
 pub use centre_line::{CentreLines, MAX_CENTRE_LINE_POINTS, centre_lines};
-pub use clip::{clip_polylines, ring_crossing};
+pub use clip::{clip_polylines, crossing_rings, ring_crossing};
 pub use disc::{arc_step, disc};
 pub use fill::fill_triangles;
 pub use narrow_gaps::close_narrow_gaps;
@@ -40,6 +42,7 @@ pub use rect::Rect;
 pub use resolution::{mean_width, without_slivers};
 pub use sanity::{MIN_RING_AREA, RegionDefect};
 pub use segment::{closest_on_segment, polyline_distance};
+pub use smooth_outline::{OutlineSegment, SmoothOptions, SmoothRing, smooth_region, smooth_ring};
 pub use specks::{MIN_PART_PX, remove_specks};
 pub use stroke::{STROKE_ARC_TOLERANCE_MM, brush_stroke};
 pub use topology::{PatternTopology, Topology, count_topology};
