@@ -62,10 +62,15 @@ pub struct SmoothOptions {
     /// A vertex where the outline turns by more than this (degrees) is a
     /// corner and stays sharp.
     pub corner_deg: f64,
-    /// A vertex that turns by more than this (degrees) and by more than
-    /// twice as much as either neighbour is a corner too: a coarse circle
-    /// turns as much at every vertex, a corner on a curve turns alone.
+    /// A vertex that turns by more than this (degrees) is a corner too,
+    /// unless it is a facet of a coarsely flattened curve: of the nearest
+    /// vertices on either side, within `facet_reach_mm` along the outline,
+    /// that turn at least half as much, one turns the same way and none the
+    /// other. A coarse circle's vertices do; a design's corner stands
+    /// alone, or between turns the other way, as on a zigzag.
     pub lone_corner_deg: f64,
+    /// How far along the outline (mm) a facet's fellows are looked for.
+    pub facet_reach_mm: f64,
     /// An edge this many times longer than both of its neighbours is a
     /// straight run and stays straight.
     pub straight_ratio: f64,
@@ -81,6 +86,7 @@ impl Default for SmoothOptions {
         SmoothOptions {
             corner_deg: 60.0,
             lone_corner_deg: 20.0,
+            facet_reach_mm: 5.0,
             straight_ratio: 3.0,
             check_turn_deg: 5.0,
             check_tolerance_mm: 0.001,
@@ -105,7 +111,12 @@ impl Default for SmoothOptions {
 /// assert!(worst < 0.002, "{worst}");
 /// // A square keeps its corners and straight sides.
 /// let square = vec![DVec2::ZERO, DVec2::X, DVec2::ONE, DVec2::Y];
-/// assert!(smooth_ring(&square, &SmoothOptions::default()).segments.iter().all(|s| matches!(s, OutlineSegment::Line(_))));
+/// let all_lines = |ring: &[DVec2]| smooth_ring(ring, &SmoothOptions::default()).segments.iter().all(|s| matches!(s, OutlineSegment::Line(_)));
+/// assert!(all_lines(&square));
+/// // So does a zigzag edge turning 40° one way, then the other.
+/// let mut zigzag: Vec<DVec2> = (0..9).map(|k| DVec2::new(k as f64, if k % 2 == 0 { 0.0 } else { 0.36 })).collect();
+/// zigzag.extend([DVec2::new(8.0, -3.0), DVec2::new(0.0, -3.0)]);
+/// assert!(all_lines(&zigzag));
 /// ```
 pub fn smooth_ring(ring: &[DVec2], options: &SmoothOptions) -> SmoothRing {
     let n = ring.len();
@@ -118,19 +129,46 @@ pub fn smooth_ring(ring: &[DVec2], options: &SmoothOptions) -> SmoothRing {
     let edge: Vec<DVec2> = (0..n).map(|k| at(k + 1) - at(k)).collect();
     let length: Vec<f64> = edge.iter().map(|e| e.length()).collect();
     let previous = |k: usize| (k + n - 1) % n;
-    // How far the outline turns at each vertex, radians; an edge with no
-    // length to say which way it goes makes a corner.
+    // How far the outline turns at each vertex, radians, left positive; an
+    // edge with no length to say which way it goes makes a corner.
     let turn: Vec<f64> = (0..n)
         .map(|k| {
             let (a, b) = (edge[previous(k)], edge[k]);
-            if length[previous(k)] <= 0.0 || length[k] <= 0.0 { std::f64::consts::PI } else { a.angle_to(b).abs() }
+            if length[previous(k)] <= 0.0 || length[k] <= 0.0 { std::f64::consts::PI } else { a.angle_to(b) }
         })
         .collect();
     let (hard, lone) = (options.corner_deg.to_radians(), options.lone_corner_deg.to_radians());
+    // The nearest vertex from `k` in direction `step` (1 or n - 1) within
+    // the reach that turns at least `least`, and which way it turns.
+    let fellow = |k: usize, step: usize, least: f64| -> Option<f64> {
+        let (mut j, mut travelled) = (k, 0.0);
+        for _ in 1..n {
+            travelled += if step == 1 { length[j] } else { length[previous(j)] };
+            j = (j + step) % n;
+            if travelled > options.facet_reach_mm || j == k {
+                return None;
+            }
+            if turn[j].abs() >= least {
+                return Some(turn[j]);
+            }
+        }
+        None
+    };
     let corner: Vec<bool> = (0..n)
         .map(|k| {
-            let around = turn[previous(k)].max(turn[(k + 1) % n]);
-            turn[k] > hard || (turn[k] > lone && turn[k] > 2.0 * around)
+            let t = turn[k];
+            if t.abs() > hard {
+                return true;
+            }
+            if t.abs() <= lone {
+                return false;
+            }
+            // A facet has a fellow turning its way, and none the other way
+            // (an arc's last facet has nothing beyond it but the line).
+            let ways = [fellow(k, 1, 0.5 * t.abs()), fellow(k, n - 1, 0.5 * t.abs())];
+            let same = ways.iter().flatten().filter(|o| o.signum() == t.signum()).count();
+            let other = ways.iter().flatten().count() - same;
+            !(same >= 1 && other == 0)
         })
         .collect();
     // No curve leaves more than this off its chord: it would loop.
