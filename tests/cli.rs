@@ -21,3 +21,21 @@ fn unknown_command_fails_and_says_so() {
     let err = String::from_utf8(out.stderr).unwrap();
     assert!(err.contains("frobnicate"), "{err}");
 }
+
+#[test]
+fn a_listing_cut_short_by_its_reader_ends_quietly() {
+    // As `tracery list --raster | head -0`: the reader is gone before the
+    // first line (the raster built-ins are painted first), so every write
+    // meets a broken pipe.
+    let mut child = tracery()
+        .args(["list", "--raster"])
+        .stdout(std::process::Stdio::piped())
+        .stderr(std::process::Stdio::piped())
+        .spawn()
+        .unwrap();
+    drop(child.stdout.take());
+    let out = child.wait_with_output().unwrap();
+    let err = String::from_utf8(out.stderr).unwrap();
+    assert!(!err.contains("panicked"), "{err}");
+    assert!(out.status.success(), "{err}");
+}

@@ -29,6 +29,9 @@ fn main() -> ExitCode {
     }
     match cli::run(cli) {
         Ok(()) => ExitCode::SUCCESS,
+        // The reader stopped reading (`tracery list | head -1`): nothing
+        // more to say to it.
+        Err(e) if is_broken_pipe(&e) => ExitCode::SUCCESS,
         Err(e) => {
             // One line: the error and its causes.
             let message = format!("{e:#}").replace('\n', " ");
@@ -49,4 +52,9 @@ fn run_app() -> eframe::Result {
         ..Default::default()
     };
     eframe::run_native("Tracery", options, Box::new(|cc| Ok(Box::new(tracery::TraceryApp::new(cc)))))
+}
+
+/// Whether `e` comes from writing to a pipe whose reader has gone.
+fn is_broken_pipe(e: &anyhow::Error) -> bool {
+    e.chain().any(|c| c.downcast_ref::<std::io::Error>().is_some_and(|io| io.kind() == std::io::ErrorKind::BrokenPipe))
 }

@@ -68,19 +68,27 @@ enum Command {
     Quilt(Box<QuiltArgs>),
 }
 
+/// Writes a line to standard output. A reader that stops reading (`| head`)
+/// makes it fail with a broken pipe, which `main` takes as the end of the
+/// listing, where `println!` would panic.
+pub(crate) fn say(line: std::fmt::Arguments) -> std::io::Result<()> {
+    use std::io::Write as _;
+    writeln!(std::io::stdout().lock(), "{line}")
+}
+
 fn list_swatches() -> Result<()> {
     for name in tracery_core::mesh_quilt::SWATCH_NAMES {
         let swatch = tracery_core::mesh_quilt::builtin_swatch(name)
             .with_context(|| format!("modelling built-in swatch '{name}'"))?;
         let size = swatch.size_mm();
-        println!(
+        say(format_args!(
             "{name:10} {:3} element(s) {:6} triangles  {:.0} x {:.0} x {:.1} mm",
             swatch.elements.len(),
             swatch.triangle_count(),
             size.x,
             size.y,
             size.z
-        );
+        ))?;
     }
     Ok(())
 }
@@ -88,7 +96,7 @@ fn list_swatches() -> Result<()> {
 fn list_raster() -> Result<()> {
     for name in tracery_core::raster_brush::BUILTIN_NAMES {
         let e = tracery_core::raster_brush::builtin(name).with_context(|| format!("painting built-in '{name}'"))?;
-        println!("{name:10} {:4} x {:3} px {:3.0}% opaque", e.width(), e.height(), 100.0 * e.coverage());
+        say(format_args!("{name:10} {:4} x {:3} px {:3.0}% opaque", e.width(), e.height(), 100.0 * e.coverage()))?;
     }
     Ok(())
 }
@@ -99,13 +107,13 @@ fn list_bases() -> Result<()> {
         let (low, high) = mesh.vertices.iter().fold(([f64::INFINITY; 3], [f64::NEG_INFINITY; 3]), |(lo, hi), v| {
             (std::array::from_fn(|k| lo[k].min(v[k])), std::array::from_fn(|k| hi[k].max(v[k])))
         });
-        println!(
+        say(format_args!(
             "{name:10} {:6} triangles  {:.0} x {:.0} x {:.0} mm",
             mesh.triangles.len(),
             high[0] - low[0],
             high[1] - low[1],
             high[2] - low[2]
-        );
+        ))?;
     }
     Ok(())
 }
@@ -121,7 +129,7 @@ fn list_curves() -> Result<()> {
             0 => String::new(),
             n => format!(", {n} filled shape(s)"),
         };
-        println!("{name:10} {:3} path(s) {:6.0} mm of curve{shapes}", strokes.len(), length);
+        say(format_args!("{name:10} {:3} path(s) {:6.0} mm of curve{shapes}", strokes.len(), length))?;
     }
     Ok(())
 }
@@ -131,12 +139,12 @@ fn list() -> Result<()> {
         let exemplar = builtin(name).with_context(|| format!("loading built-in exemplar '{name}'"))?;
         let pieces = PieceSet::new(&exemplar, &SliceOptions::default())
             .with_context(|| format!("cutting built-in exemplar '{name}'"))?;
-        println!(
+        say(format_args!(
             "{name:10} {:3} component(s) {:3} hole(s) {:3} pieces",
             exemplar.region.component_count(),
             exemplar.region.hole_count(),
             pieces.len()
-        );
+        ))?;
     }
     Ok(())
 }

@@ -5,6 +5,8 @@ use std::path::PathBuf;
 
 use anyhow::{Result, bail};
 use serde::Serialize;
+
+use super::say;
 use tracery_core::Product;
 use tracery_core::export::{
     SvgFlavour, SvgOptions, ThreeMfObject, encode_png, object_colour, render_product, write_3mf, write_paths_svg,
@@ -280,14 +282,14 @@ pub fn write_outputs(
     let openings = if t.loop_openings > 0 { format!(" (+{} loop opening)", t.loop_openings) } else { String::new() };
     let rings = if t.jump_rings > 0 { format!(" (+{} jump ring)", t.jump_rings) } else { String::new() };
     let pieces = product.facts.count("pieces").map_or(String::new(), |n| format!(", {n} pieces"));
-    println!(
+    say(format_args!(
         "{exemplar}: {} component(s), {} hole(s){openings}{rings}{pieces}; {:.0} ms",
         t.components,
         t.holes,
         product.timings.total_ms()
-    );
+    ))?;
     for w in &product.warnings {
-        println!("warning: {w}");
+        say(format_args!("warning: {w}"))?;
     }
     Ok(())
 }
