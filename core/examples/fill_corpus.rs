@@ -22,6 +22,8 @@ use tracery_core::geom::{Polygon, Rect, Region};
 use tracery_core::quality::{coverage, curve_statistics_within, element_statistics};
 use tracery_core::region_fill::{CurveExemplar, FillError, Settings, make_product, parse_region};
 
+#[path = "common/corpus.rs"]
+mod corpus;
 #[path = "common/sheet.rs"]
 mod sheet;
 
@@ -68,12 +70,7 @@ fn main() {
     let size_mm: f64 = argument(&args, "--size").and_then(|s| s.parse().ok()).unwrap_or(40.0);
     let limit = Duration::from_secs_f64(argument(&args, "--limit-s").and_then(|s| s.parse().ok()).unwrap_or(20.0));
     let sheet_path = argument(&args, "--sheet").unwrap_or("docs/fill-corpus.png".into());
-    let mut files: Vec<_> = std::fs::read_dir(&dir)
-        .expect("the corpus folder")
-        .filter_map(|e| e.ok().map(|e| e.path()))
-        .filter(|p| p.extension().is_some_and(|e| e == "svg"))
-        .collect();
-    files.sort();
+    let files = corpus::svg_files(&dir);
     let region: Region = parse_region(&format!("rect:{}x{}", REGION.0, REGION.1)).expect("a region");
     let bounds = region.bounds().expect("bounds");
     let mut outcomes = Vec::new();

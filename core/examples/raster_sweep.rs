@@ -9,6 +9,8 @@
 //!     [--corpus DIR] [--every K] [--loops] [--out DIR]
 //! ```
 
+#[path = "common/corpus.rs"]
+mod corpus;
 #[path = "common/sheet.rs"]
 mod sheet;
 
@@ -70,12 +72,12 @@ fn percentile(sorted: &[f64], q: f64) -> f64 {
 }
 
 fn main() {
-    let mut corpus = PathBuf::from(concat!(env!("CARGO_MANIFEST_DIR"), "/../../shared/corpus/ornaments"));
+    let mut folder = PathBuf::from(concat!(env!("CARGO_MANIFEST_DIR"), "/../../shared/corpus/ornaments"));
     let (mut every, mut loops, mut out) = (1usize, false, None::<PathBuf>);
     let mut args = std::env::args().skip(1);
     while let Some(a) = args.next() {
         match a.as_str() {
-            "--corpus" => corpus = args.next().expect("a folder").into(),
+            "--corpus" => folder = args.next().expect("a folder").into(),
             "--every" => every = args.next().expect("a number").parse().expect("a number"),
             "--loops" => loops = true,
             "--out" => out = Some(args.next().expect("a folder").into()),
@@ -85,12 +87,7 @@ fn main() {
     if let Some(dir) = &out {
         std::fs::create_dir_all(dir).expect("output folder");
     }
-    let mut files: Vec<PathBuf> = std::fs::read_dir(&corpus)
-        .expect("the corpus folder")
-        .filter_map(|e| e.ok().map(|e| e.path()))
-        .filter(|p| p.extension().is_some_and(|x| x == "svg"))
-        .collect();
-    files.sort();
+    let files = corpus::svg_files(&folder);
     let curves: Vec<&str> = if loops { vec!["wave:160", "circle:25"] } else { vec!["wave:160"] };
     let mut not_pictures = 0;
     for curve in &curves {

@@ -16,6 +16,9 @@ use tracery_core::curve::{Along, Curve};
 use tracery_core::geom::{OutlineSegment, SmoothOptions, smooth_region};
 use tracery_core::vector_brush::{Exemplar, LoadOptions, Settings, synthesize};
 
+#[path = "common/corpus.rs"]
+mod corpus;
+
 /// Joins of a closed ring that show as facets: where successive edges,
 /// both at least 50 µm long, turn by more than 5° but less than 20°, which
 /// no smoothing treats as a corner; and all joins, of edges at least 10 µm
@@ -45,13 +48,8 @@ fn facets(ring: &[DVec2]) -> (usize, usize) {
 fn main() {
     let mut args = std::env::args().skip(1);
     let every: usize = args.next().and_then(|v| v.parse().ok()).unwrap_or(10);
-    let corpus = args.next().unwrap_or_else(|| "../shared/corpus/ornaments".into());
-    let mut files: Vec<_> = std::fs::read_dir(&corpus)
-        .expect("the corpus folder")
-        .filter_map(|e| e.ok().map(|e| e.path()))
-        .filter(|p| p.extension().is_some_and(|x| x == "svg"))
-        .collect();
-    files.sort();
+    let folder = args.next().unwrap_or_else(|| "../shared/corpus/ornaments".into());
+    let files = corpus::svg_files(&folder);
     let options = SmoothOptions::default();
     let (mut runs, mut kept, mut times) = (0, 0, Vec::new());
     let (mut before, mut after) = ((0, 0), (0, 0));

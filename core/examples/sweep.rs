@@ -15,6 +15,8 @@
 //! variety weight avoids it), the stitching's worst stretch and shear of the pieces, and the
 //! time of the whole pipeline. The summary prints one row per curve.
 
+#[path = "common/corpus.rs"]
+mod corpus;
 #[path = "common/sheet.rs"]
 mod sheet;
 
@@ -337,12 +339,7 @@ fn summary(runs: &[Run], curves: &[String]) -> String {
 
 fn main() {
     let args = parse_args();
-    let mut files: Vec<PathBuf> = std::fs::read_dir(&args.corpus)
-        .unwrap_or_else(|e| panic!("cannot read {}: {e}", args.corpus.display()))
-        .filter_map(|e| e.ok().map(|e| e.path()))
-        .filter(|p| p.extension().is_some_and(|x| x == "svg"))
-        .collect();
-    files.sort();
+    let mut files = corpus::svg_files(&args.corpus);
     files.retain(|f| {
         args.only.as_ref().is_none_or(|o| f.file_stem().is_some_and(|s| s.to_string_lossy().contains(o.as_str())))
     });

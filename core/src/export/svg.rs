@@ -170,14 +170,18 @@ fn page(bounds: &Rect) -> (String, impl Fn(DVec2) -> DVec2 + Copy + use<>) {
     (svg, move |p: DVec2| DVec2::new(p.x - min_x, max_y - p.y))
 }
 
+/// A point on the page as written: `x,y` to [`DECIMALS`] places.
+fn point_text(q: DVec2) -> String {
+    format!("{:.DECIMALS$},{:.DECIMALS$}", q.x, q.y)
+}
+
 /// One closed subpath, with points that round to the same written
 /// coordinates merged, so no segment has zero length. `None` when fewer
 /// than three distinct points remain.
 fn ring_path(ring: &[DVec2], to_page: impl Fn(DVec2) -> DVec2) -> Option<String> {
     let mut points: Vec<String> = Vec::with_capacity(ring.len());
     for p in ring {
-        let q = to_page(*p);
-        let text = format!("{:.DECIMALS$},{:.DECIMALS$}", q.x, q.y);
+        let text = point_text(to_page(*p));
         if points.last() != Some(&text) {
             points.push(text);
         }
@@ -195,10 +199,7 @@ fn ring_path(ring: &[DVec2], to_page: impl Fn(DVec2) -> DVec2) -> Option<String>
 /// to the written coordinates of the one before dropped. `None` when fewer
 /// than three distinct points remain.
 fn smooth_ring_path(ring: &SmoothRing, to_page: impl Fn(DVec2) -> DVec2) -> Option<String> {
-    let text = |p: DVec2| {
-        let q = to_page(p);
-        format!("{:.DECIMALS$},{:.DECIMALS$}", q.x, q.y)
-    };
+    let text = |p: DVec2| point_text(to_page(p));
     let start = text(ring.start);
     let mut last = start.clone();
     let mut d = format!("M{start}");
@@ -255,14 +256,7 @@ pub fn write_paths_svg(paths: &[crate::product::StrokedPath], filled: &Region) -
         r#"  <g id="strokes" fill="none" stroke="black" stroke-linecap="round" stroke-linejoin="round">"#
     );
     for path in paths {
-        let points: Vec<String> = path
-            .points_mm
-            .iter()
-            .map(|p| {
-                let q = to_page(*p);
-                format!("{:.DECIMALS$},{:.DECIMALS$}", q.x, q.y)
-            })
-            .collect();
+        let points: Vec<String> = path.points_mm.iter().map(|p| point_text(to_page(*p))).collect();
         if points.len() < 2 {
             continue;
         }

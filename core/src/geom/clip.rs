@@ -145,35 +145,51 @@ fn segments_cross([a, b]: [DVec2; 2], [c, d]: [DVec2; 2]) -> bool {
 /// assert!((ring_crossing(&bow_tie).unwrap() - DVec2::splat(0.5)).length() < 1e-9);
 /// ```
 pub fn ring_crossing(ring: &[DVec2]) -> Option<DVec2> {
-    let n = ring.len();
-    if n < 4 {
-        return None;
-    }
-    let edge = |i: usize| [ring[i], ring[(i + 1) % n]];
-    let mut order: Vec<usize> = (0..n).collect();
-    order.sort_by(|&a, &b| {
-        let [p, q] = edge(a);
-        let [r, s] = edge(b);
-        p.x.min(q.x).total_cmp(&r.x.min(s.x))
+    let mut at = None;
+    sweep_crossings(&[ring], |_, _, [a, b], [c, d]| {
+        // Where they meet: the lines' intersection, or a shared end.
+        let denominator = (b - a).perp_dot(d - c);
+        let t = if denominator.abs() > 0.0 { (c - a).perp_dot(d - c) / denominator } else { 0.0 };
+        at = Some(a + (b - a) * t.clamp(0.0, 1.0));
+        true
     });
-    for (k, &i) in order.iter().enumerate() {
-        let [a, b] = edge(i);
-        let right = a.x.max(b.x);
-        for &j in &order[k + 1..] {
-            let [c, d] = edge(j);
-            if c.x.min(d.x) > right {
+    at
+}
+
+/// Sweeps the edges of the closed `rings` in order of their left ends,
+/// comparing only edges whose spans overlap, and calls `found` with the
+/// two rings and edges of each pair that share a point and are not
+/// neighbours on one ring; stops when `found` says so (true).
+fn sweep_crossings<R: AsRef<[DVec2]>>(
+    rings: &[R],
+    mut found: impl FnMut(usize, usize, [DVec2; 2], [DVec2; 2]) -> bool,
+) {
+    let ring = |r: usize| rings[r].as_ref();
+    let edge = |r: usize, i: usize| [ring(r)[i], ring(r)[(i + 1) % ring(r).len()]];
+    // (ring, edge, left end) of every edge, by its left end.
+    let mut order: Vec<(usize, usize, f64)> = (0..rings.len())
+        .filter(|&r| ring(r).len() >= 2)
+        .flat_map(|r| (0..ring(r).len()).map(move |i| (r, i, edge(r, i)[0].x.min(edge(r, i)[1].x))))
+        .collect();
+    order.sort_by(|a, b| a.2.total_cmp(&b.2));
+    for (k, &(r, i, _)) in order.iter().enumerate() {
+        let [a, b] = edge(r, i);
+        let (right, low, high) = (a.x.max(b.x), a.y.min(b.y), a.y.max(b.y));
+        for &(s, j, left) in &order[k + 1..] {
+            if left > right {
                 break;
             }
-            let neighbours = (i + 1) % n == j || (j + 1) % n == i;
-            if !neighbours && segments_cross([a, b], [c, d]) {
-                // Where they meet: the lines' intersection, or a shared end.
-                let denominator = (b - a).perp_dot(d - c);
-                let t = if denominator.abs() > 0.0 { (c - a).perp_dot(d - c) / denominator } else { 0.0 };
-                return Some(a + (b - a) * t.clamp(0.0, 1.0));
+            let [c, d] = edge(s, j);
+            if c.y.max(d.y) < low || c.y.min(d.y) > high {
+                continue;
+            }
+            let n = ring(r).len();
+            let neighbours = r == s && ((i + 1) % n == j || (j + 1) % n == i);
+            if !neighbours && segments_cross([a, b], [c, d]) && found(r, s, [a, b], [c, d]) {
+                return;
             }
         }
     }
-    None
 }
 
 /// Which of `rings` (closed) cross or touch themselves or another: every
@@ -190,36 +206,10 @@ pub fn ring_crossing(ring: &[DVec2]) -> Option<DVec2> {
 /// ```
 pub fn crossing_rings(rings: &[Vec<DVec2>]) -> Vec<bool> {
     let mut crossing = vec![false; rings.len()];
-    // (ring, edge) of every edge, by its left end.
-    let mut order: Vec<(usize, usize, f64)> = rings
-        .iter()
-        .enumerate()
-        .filter(|(_, ring)| ring.len() >= 2)
-        .flat_map(|(r, ring)| (0..ring.len()).map(move |i| (r, i, ring[i].x.min(ring[(i + 1) % ring.len()].x))))
-        .collect();
-    order.sort_by(|a, b| a.2.total_cmp(&b.2));
-    let edge = |r: usize, i: usize| [rings[r][i], rings[r][(i + 1) % rings[r].len()]];
-    for (k, &(r, i, _)) in order.iter().enumerate() {
-        let [a, b] = edge(r, i);
-        let (right, low, high) = (a.x.max(b.x), a.y.min(b.y), a.y.max(b.y));
-        for &(s, j, left) in &order[k + 1..] {
-            if left > right {
-                break;
-            }
-            if crossing[r] && crossing[s] {
-                continue;
-            }
-            let [c, d] = edge(s, j);
-            if c.y.max(d.y) < low || c.y.min(d.y) > high {
-                continue;
-            }
-            let n = rings[r].len();
-            let neighbours = r == s && ((i + 1) % n == j || (j + 1) % n == i);
-            if !neighbours && segments_cross([a, b], [c, d]) {
-                crossing[r] = true;
-                crossing[s] = true;
-            }
-        }
-    }
+    sweep_crossings(rings, |r, s, _, _| {
+        crossing[r] = true;
+        crossing[s] = true;
+        false
+    });
     crossing
 }
