@@ -5,7 +5,8 @@ use glam::DVec2;
 use super::Curve;
 use rayon::prelude::*;
 
-use crate::geom::{Polygon, Region, refine_mapped, union};
+use super::closing_weld::{Ends, MappedRing, closed_without_union};
+use crate::geom::{Polygon, Region, refine_mapped_indexed, union};
 use crate::report::Warning;
 
 /// A pattern laid along a curve, in the plane, in millimetres.
@@ -32,8 +33,9 @@ pub const MAPPING_TOLERANCE_MM: f64 = 0.005;
 /// Where the curve turns tighter than the band's half-height, the band would
 /// fold over itself; there it is narrowed smoothly (a warning says where).
 /// Where distant parts of the curve come close enough for the band to overlap,
-/// the overlapping parts are merged by the final union (a warning says so),
-/// so the output never intersects itself.
+/// the overlapping parts are merged by a union (a warning says so), so the
+/// output never intersects itself. Where nothing overlaps, the mapped rings
+/// are already clean and a loop's two ends are joined without one.
 pub fn map_along(band_region: &Region, scale: f64, curve: &Curve) -> PlanarPattern {
     let mut warnings = Vec::new();
     let half = band_region.reach_from_axis() * scale;
@@ -85,16 +87,46 @@ pub fn map_along(band_region: &Region, scale: f64, curve: &Curve) -> PlanarPatte
     };
     // Points are added where the curve bends an edge away from its chord.
     // Rings are mapped on every core.
-    let ring = |r: &Vec<DVec2>| refine_mapped(r, place, step / scale, MAPPING_TOLERANCE_MM);
-    let mapped: Vec<Polygon> = band_region
+    let ring = |r: &Vec<DVec2>| {
+        let (points, origins) = refine_mapped_indexed(r, place, step / scale, MAPPING_TOLERANCE_MM);
+        MappedRing { points, origins }
+    };
+    let mapped: Vec<Vec<MappedRing>> = band_region
         .polygons
         .par_iter()
-        .map(|polygon| Polygon { outer: ring(&polygon.outer), holes: polygon.holes.par_iter().map(ring).collect() })
+        .map(|polygon| {
+            std::iter::once(&polygon.outer)
+                .chain(&polygon.holes)
+                .collect::<Vec<_>>()
+                .into_par_iter()
+                .map(ring)
+                .collect()
+        })
         .collect();
-    let separate: f64 = mapped.iter().map(Polygon::area).sum();
-    let region = union(&[&Region::new(mapped)]);
-    if separate > 0.0 && (separate - region.area()) / separate > 1e-3 {
-        warnings.push(Warning::BandOverlapsItself { merged_percent: 100.0 * (separate - region.area()) / separate });
-    }
+    // The band's two ends, where `place` puts the same point for the same `v`.
+    let ends = closed.then_some(Ends {
+        at_start: |x: f64| (x * scale).abs() <= 1e-9 * length,
+        at_end: |x: f64| (x * scale - length).abs() <= 1e-9 * length,
+    });
+    let region = match closed_without_union(band_region, &mapped, ends) {
+        Some(region) => region,
+        None => {
+            let mapped: Vec<Polygon> = mapped
+                .into_iter()
+                .map(|mut rings| {
+                    let outer = std::mem::take(&mut rings[0].points);
+                    Polygon { outer, holes: rings.into_iter().skip(1).map(|r| r.points).collect() }
+                })
+                .collect();
+            let separate: f64 = mapped.iter().map(Polygon::area).sum();
+            let region = union(&[&Region::new(mapped)]);
+            if separate > 0.0 && (separate - region.area()) / separate > 1e-3 {
+                warnings.push(Warning::BandOverlapsItself {
+                    merged_percent: 100.0 * (separate - region.area()) / separate,
+                });
+            }
+            region
+        }
+    };
     PlanarPattern { region, warnings, narrowest_band: narrowest }
 }

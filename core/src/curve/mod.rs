@@ -5,6 +5,7 @@
 
 mod along;
 mod band_to_plane;
+mod closing_weld;
 mod parametric;
 mod planar_topology;
 mod svg_path;

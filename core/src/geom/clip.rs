@@ -118,7 +118,7 @@ fn crosses_boundary(points: &[DVec2], region: &Region) -> bool {
 }
 
 /// Whether two segments share a point (touching counts).
-fn segments_cross([a, b]: [DVec2; 2], [c, d]: [DVec2; 2]) -> bool {
+pub(super) fn segments_cross([a, b]: [DVec2; 2], [c, d]: [DVec2; 2]) -> bool {
     let side = |p: DVec2, q: DVec2, r: DVec2| (q - p).perp_dot(r - p);
     let (d1, d2) = (side(c, d, a), side(c, d, b));
     let (d3, d4) = (side(a, b, c), side(a, b, d));

@@ -23,7 +23,32 @@ use glam::DVec2;
 /// assert!(bent.len() > 8);
 /// ```
 pub fn refine_mapped(ring: &[DVec2], map: impl Fn(DVec2) -> DVec2, max_step: f64, tolerance: f64) -> Vec<DVec2> {
-    refined(ring, map, max_step, tolerance, None)
+    refined(ring, map, max_step, tolerance, None, &mut Vec::new())
+}
+
+/// [`refine_mapped`], with where each of the ring's own vertices went: the
+/// `k`-th vertex of `ring` is at index `origins[k]` of the output.
+///
+/// ```
+/// use glam::DVec2;
+/// use tracery_core::geom::refine_mapped_indexed;
+/// let square = [DVec2::new(0.0, 0.0), DVec2::new(1.0, 0.0), DVec2::new(1.0, 1.0), DVec2::new(0.0, 1.0)];
+/// let bend = |p: DVec2| DVec2::new(p.x, p.y + p.x * p.x);
+/// let (out, origins) = refine_mapped_indexed(&square, bend, 10.0, 1e-3);
+/// assert_eq!(origins.len(), 4);
+/// for (k, &i) in origins.iter().enumerate() {
+///     assert_eq!(out[i], bend(square[k]));
+/// }
+/// ```
+pub fn refine_mapped_indexed(
+    ring: &[DVec2],
+    map: impl Fn(DVec2) -> DVec2,
+    max_step: f64,
+    tolerance: f64,
+) -> (Vec<DVec2>, Vec<usize>) {
+    let mut origins = Vec::with_capacity(ring.len());
+    let out = refined(ring, map, max_step, tolerance, None, &mut origins);
+    (out, origins)
 }
 
 /// [`refine_mapped`], then each edge's new points thinned (Douglas–Peucker)
@@ -52,7 +77,7 @@ pub fn refine_mapped_thinned(
     tolerance: f64,
     thin: f64,
 ) -> Vec<DVec2> {
-    refined(ring, map, max_step, tolerance, Some(thin))
+    refined(ring, map, max_step, tolerance, Some(thin), &mut Vec::new())
 }
 
 fn refined(
@@ -61,6 +86,7 @@ fn refined(
     max_step: f64,
     tolerance: f64,
     thin: Option<f64>,
+    origins: &mut Vec<usize>,
 ) -> Vec<DVec2> {
     fn halve(
         out: &mut Vec<DVec2>,
@@ -88,6 +114,7 @@ fn refined(
     let mut edge: Vec<DVec2> = Vec::new();
     for i in 0..n {
         let (a, b) = (ring[i], ring[(i + 1) % n]);
+        origins.push(out.len());
         if a.x == b.x {
             out.push(mapped[i]);
             continue;
