@@ -5,8 +5,7 @@ use glam::DVec2;
 use super::Curve;
 use rayon::prelude::*;
 
-use super::closing_weld::{Ends, MappedRing, closed_without_union};
-use crate::geom::{Polygon, Region, refine_mapped_indexed, union};
+use crate::geom::{Outline, Polygon, Region, joined_without_union, refine_mapped_indexed, union};
 use crate::report::Warning;
 
 /// A pattern laid along a curve, in the plane, in millimetres.
@@ -86,38 +85,48 @@ pub fn map_along(band_region: &Region, scale: f64, curve: &Curve) -> PlanarPatte
         curve.map(u, p.y * scale * narrowing(u))
     };
     // Points are added where the curve bends an edge away from its chord.
-    // Rings are mapped on every core.
-    let ring = |r: &Vec<DVec2>| {
-        let (points, origins) = refine_mapped_indexed(r, place, step / scale, MAPPING_TOLERANCE_MM);
-        MappedRing { points, origins }
+    // A loop's two ends are one line in the plane, where `place` puts the
+    // same point for the same `v`: points there are marked, so that the
+    // outlines meeting across it are joined.
+    let line_of = |x: f64| {
+        if !closed {
+            None
+        } else if (x * scale).abs() <= 1e-9 * length {
+            Some(0)
+        } else if (x * scale - length).abs() <= 1e-9 * length {
+            Some(1)
+        } else {
+            None
+        }
     };
-    let mapped: Vec<Vec<MappedRing>> = band_region
+    let outline = |(polygon, r): (usize, &Vec<DVec2>)| {
+        let (points, origins) = refine_mapped_indexed(r, place, step / scale, MAPPING_TOLERANCE_MM);
+        let mut lines = vec![None; points.len()];
+        for (p, &i) in r.iter().zip(&origins) {
+            lines[i] = line_of(p.x);
+        }
+        Outline { polygon, points, lines }
+    };
+    // Rings are mapped on every core.
+    let rings: Vec<(usize, &Vec<DVec2>)> = band_region
         .polygons
-        .par_iter()
-        .map(|polygon| {
-            std::iter::once(&polygon.outer)
-                .chain(&polygon.holes)
-                .collect::<Vec<_>>()
-                .into_par_iter()
-                .map(ring)
-                .collect()
-        })
+        .iter()
+        .enumerate()
+        .flat_map(|(p, polygon)| std::iter::once(&polygon.outer).chain(&polygon.holes).map(move |r| (p, r)))
         .collect();
-    // The band's two ends, where `place` puts the same point for the same `v`.
-    let ends = closed.then_some(Ends {
-        at_start: |x: f64| (x * scale).abs() <= 1e-9 * length,
-        at_end: |x: f64| (x * scale - length).abs() <= 1e-9 * length,
-    });
-    let region = match closed_without_union(band_region, &mapped, ends) {
+    let outlines: Vec<Outline> = rings.into_par_iter().map(outline).collect();
+    let region = match joined_without_union(band_region.polygons.len(), &outlines) {
         Some(region) => region,
         None => {
-            let mapped: Vec<Polygon> = mapped
-                .into_iter()
-                .map(|mut rings| {
-                    let outer = std::mem::take(&mut rings[0].points);
-                    Polygon { outer, holes: rings.into_iter().skip(1).map(|r| r.points).collect() }
-                })
-                .collect();
+            let mut mapped: Vec<Polygon> = band_region.polygons.iter().map(|_| Polygon::default()).collect();
+            for outline in outlines {
+                let polygon = &mut mapped[outline.polygon];
+                if polygon.outer.is_empty() {
+                    polygon.outer = outline.points;
+                } else {
+                    polygon.holes.push(outline.points);
+                }
+            }
             let separate: f64 = mapped.iter().map(Polygon::area).sum();
             let region = union(&[&Region::new(mapped)]);
             if separate > 0.0 && (separate - region.area()) / separate > 1e-3 {

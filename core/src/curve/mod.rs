@@ -5,7 +5,6 @@
 
 mod along;
 mod band_to_plane;
-mod closing_weld;
 mod parametric;
 mod planar_topology;
 mod svg_path;

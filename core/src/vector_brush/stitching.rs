@@ -27,8 +27,9 @@ use serde::{Deserialize, Serialize};
 
 use super::{CurveKind, Distortion, PieceSet};
 use rayon::prelude::*;
+use rustc_hash::FxHashMap;
 
-use crate::geom::{Polygon, Region, refine_mapped_thinned, union};
+use crate::geom::{Outline, Polygon, Region, joined_without_union, refine_mapped_thinned, union};
 
 /// A synthesized pattern in band space: `u` from 0 to the curve length,
 /// `v` across the band, in exemplar units.
@@ -177,6 +178,25 @@ const MAX_BEND: f64 = 1.5;
 /// Largest `|∂bend/∂v|` one bend may add: two bends overlap at most, so
 /// `v` still grows at least half as fast as before the bending.
 const MAX_FOLD_SLOPE: f64 = 0.25;
+
+/// The union of the stitched pieces' polygons, which touch only along the
+/// seams, where both sides of a cut have the same points to the last bit:
+/// joined there without a boolean ([`joined_without_union`]) unless that
+/// cannot vouch for the result (pieces that overlap or only nearly meet).
+fn joined_pieces(polygons: Vec<Polygon>, seams_u: &[f64]) -> Region {
+    let line_of: FxHashMap<u64, u32> = seams_u.iter().enumerate().map(|(k, u)| (u.to_bits(), k as u32)).collect();
+    let outlines: Vec<Outline> = polygons
+        .iter()
+        .enumerate()
+        .flat_map(|(p, polygon)| std::iter::once(&polygon.outer).chain(&polygon.holes).map(move |ring| (p, ring)))
+        .map(|(polygon, ring)| Outline {
+            polygon,
+            points: ring.clone(),
+            lines: ring.iter().map(|q| line_of.get(&q.x.to_bits()).copied()).collect(),
+        })
+        .collect();
+    joined_without_union(polygons.len(), &outlines).unwrap_or_else(|| union(&[&Region::new(polygons)]))
+}
 
 /// `max_x x·(1 − x)²·(1 + 2x)` over `[0, 1]`, the largest value of the bend's
 /// `|u − seam| · falloff` in radii, rounded up.
@@ -378,7 +398,7 @@ pub fn stitch(
     };
     let (polygons, distortions): (Vec<Vec<Polygon>>, Vec<Distortion>) =
         pieces.par_iter().enumerate().map(deformed).unzip();
-    let region = union(&[&Region::new(polygons.into_iter().flatten().collect())]);
     let seams = seam_u[1..n].to_vec();
+    let region = joined_pieces(polygons.into_iter().flatten().collect(), &seams);
     BandPattern { region, length, seams, curve, distortion: Distortion::join(distortions) }
 }

@@ -1,43 +1,36 @@
-//! The rings of a band-space pattern, mapped along a curve, made into a
-//! clean region without a boolean: where the curve is a loop, the outlines
-//! that meet at the band's two ends are joined there.
+//! Outlines that meet along shared runs, made into a clean region without
+//! a boolean: where two outlines run along the same line between the same
+//! two points in opposite directions (the two sides of a cut), they are
+//! joined there.
 //!
-//! A union of the mapped rings gives the same region, but on a dense
-//! pattern it is most of the mapping's time (28–38 of 36–55 ms for 55 k
-//! vertices) and changes almost nothing: stitching already made the band
-//! region clean, and a mapping that does not fold keeps it so. Only the
-//! loop's closing seam needs joining, and there the two ends' points are
-//! the same to the last bit. Anything this cannot vouch for (an outline
-//! that crosses or touches another once mapped, ends that do not meet
-//! exactly) is left to the union.
+//! A union of the outlines gives the same region, but on a dense pattern
+//! it is most of a stage's time (28–38 of 36–55 ms for the mapping along a
+//! curve of 55 k vertices) and changes almost nothing: stitching and mapping
+//! keep outlines apart but at their cuts, where both sides have the same
+//! points to the last bit. Anything this cannot vouch for (an outline that
+//! crosses or touches another, cuts whose sides do not meet exactly) is
+//! left to the union.
 
 use glam::DVec2;
 use rustc_hash::FxHashMap;
 
+use super::{Polygon, Region, rings_meet, signed_area};
 use crate::disjoint_sets::DisjointSets;
-use crate::geom::{Polygon, Region, rings_meet, signed_area};
 
-/// One band ring mapped into the plane: its points, and for each of the band
-/// ring's own vertices its index among them (as
-/// [`crate::geom::refine_mapped_indexed`] gives).
+/// One outline: the polygon it came from, its points, and for each point
+/// the cut line it lies on, if any. Points on one line in a row make a run.
 #[derive(Clone, Debug)]
-pub(crate) struct MappedRing {
+pub(crate) struct Outline {
+    pub polygon: usize,
     pub points: Vec<DVec2>,
-    pub origins: Vec<usize>,
-}
-
-/// Where a band vertex lies: on the band's start line, on its end line, or
-/// neither. A loop's two ends are the same line in the plane.
-pub(crate) struct Ends<S: Fn(f64) -> bool, E: Fn(f64) -> bool> {
-    pub at_start: S,
-    pub at_end: E,
+    pub lines: Vec<Option<u32>>,
 }
 
 /// A point's exact bits: the key two runs' ends are matched by.
 type PointKey = (u64, u64);
 
-/// A maximal run of a ring's band vertices on one end line: mapped indices
-/// `first` and `last` of ring `ring`, whose points are its two ends.
+/// A maximal run of an outline's points on one line: indices `first` and
+/// `last` of outline `ring`, whose points are its two ends.
 #[derive(Clone, Copy, Debug)]
 struct Run {
     ring: usize,
@@ -45,81 +38,71 @@ struct Run {
     last: usize,
 }
 
-/// The region made of `mapped` (per polygon of `band`: its outer ring then
-/// its holes), with each run of outline on the band's start line joined to
-/// the run on its end line that has the same two end points, reversed.
-/// `None` where the result would not be clean: rings that cross or touch
-/// once mapped, a component with more or fewer than one outer ring, or
-/// joins that do not fit together. The caller then takes the union.
+/// The region made of `outlines` (from `polygons` clean, disjoint
+/// polygons), each run joined to the run that has the same two end points
+/// in the other order. `None` where the result would not be clean: outlines
+/// that cross or touch, a component with more or fewer than one outer
+/// ring, or joins that do not fit together. The caller then takes the union.
 ///
-/// Rings keep their orientation when the mapping keeps it, and all are
-/// reversed when it mirrors (the material's total area says which).
-pub(crate) fn closed_without_union<S: Fn(f64) -> bool, E: Fn(f64) -> bool>(
-    band: &Region,
-    mapped: &[Vec<MappedRing>],
-    ends: Option<Ends<S, E>>,
-) -> Option<Region> {
-    // Every ring, with its polygon and the offset of its first vertex.
-    let mut rings: Vec<(usize, &[DVec2], &MappedRing)> = Vec::new();
-    for (p, (polygon, mapped)) in band.polygons.iter().zip(mapped).enumerate() {
-        if mapped.len() != 1 + polygon.holes.len() {
-            return None;
-        }
-        for (band_ring, ring) in std::iter::once(&polygon.outer).chain(&polygon.holes).zip(mapped) {
-            if band_ring.len() != ring.origins.len() || ring.points.len() < 3 {
-                return None;
-            }
-            rings.push((p, band_ring, ring));
-        }
+/// Outlines keep their orientation when the sum of their areas is
+/// positive, and are all reversed when it is negative (a mirroring map).
+pub(crate) fn joined_without_union(polygons: usize, outlines: &[Outline]) -> Option<Region> {
+    let rings = outlines;
+    if rings.iter().any(|r| r.points.len() < 3 || r.lines.len() != r.points.len() || r.polygon >= polygons) {
+        return None;
     }
     let mut offset = Vec::with_capacity(rings.len() + 1);
     offset.push(0);
-    for (_, _, ring) in &rings {
+    for ring in rings {
         offset.push(offset.last().copied().unwrap_or(0) + ring.points.len());
     }
     let total = *offset.last()?;
-    let ring_of: Vec<usize> = (0..rings.len()).flat_map(|r| std::iter::repeat_n(r, rings[r].2.points.len())).collect();
+    let ring_of: Vec<usize> = (0..rings.len()).flat_map(|r| std::iter::repeat_n(r, rings[r].points.len())).collect();
     let mut next: Vec<usize> =
         (0..total).map(|g| if g + 1 == offset[ring_of[g] + 1] { offset[ring_of[g]] } else { g + 1 }).collect();
     let mut dropped = vec![false; total];
-    let mut groups = DisjointSets::new(band.polygons.len());
+    let mut groups = DisjointSets::new(polygons);
 
-    if let Some(ends) = ends {
-        let starts = runs(&rings, &ends.at_start)?;
-        let finishes = runs(&rings, &ends.at_end)?;
-        let point = |r: usize, i: usize| rings[r].2.points[i];
+    let runs = runs(rings)?;
+    if !runs.is_empty() {
+        let point = |run: &Run, i: usize| rings[run.ring].points[i];
         let key = |p: DVec2| -> PointKey { (p.x.to_bits(), p.y.to_bits()) };
-        let mut by_ends: FxHashMap<(PointKey, PointKey), Run> = FxHashMap::default();
-        for run in finishes {
-            let ends = (key(point(run.ring, run.first)), key(point(run.ring, run.last)));
-            if by_ends.insert(ends, run).is_some() {
+        let mut by_ends: FxHashMap<(PointKey, PointKey), usize> = FxHashMap::default();
+        for (k, run) in runs.iter().enumerate() {
+            if by_ends.insert((key(point(run, run.first)), key(point(run, run.last))), k).is_some() {
                 return None;
             }
         }
+        let mut used = vec![false; runs.len()];
         let mut changed = vec![false; total];
         let mut kept = Vec::new();
-        for a in starts {
-            // The end's run goes the other way: from the start run's last point to its first.
-            let Some(b) = by_ends.remove(&(key(point(a.ring, a.last)), key(point(a.ring, a.first)))) else {
+        for (k, a) in runs.iter().enumerate() {
+            // The other side runs the other way: from this run's last point to its first.
+            let Some(&m) = by_ends.get(&(key(point(a, a.last)), key(point(a, a.first)))) else {
                 continue;
             };
-            let (na, nb) = (rings[a.ring].2.points.len(), rings[b.ring].2.points.len());
+            if used[k] || used[m] || m == k {
+                continue;
+            }
+            (used[k], used[m]) = (true, true);
+            let b = &runs[m];
+            let (na, nb) = (rings[a.ring].points.len(), rings[b.ring].points.len());
             let (ga, gb) = (offset[a.ring], offset[b.ring]);
-            // The start run's inner points and the whole end run go; the
-            // outline comes in along the end's side and leaves along the
-            // start's, at the points both runs share.
+            // This run's inner points and the whole other run go; the
+            // outline comes in along the other side and leaves along this
+            // one, at the points both runs share.
             let mut i = (a.first + 1) % na;
             while i != a.last {
                 dropped[ga + i] = true;
                 i = (i + 1) % na;
             }
-            let mut k = b.first;
+            let mut i = b.first;
             loop {
-                dropped[gb + k] = true;
-                if k == b.last {
+                dropped[gb + i] = true;
+                if i == b.last {
                     break;
                 }
-                k = (k + 1) % nb;
+                i = (i + 1) % nb;
             }
             let (after_b, before_b) = (gb + (b.last + 1) % nb, gb + (b.first + nb - 1) % nb);
             let (a_first, a_last) = (ga + a.first, ga + a.last);
@@ -131,7 +114,7 @@ pub(crate) fn closed_without_union<S: Fn(f64) -> bool, E: Fn(f64) -> bool>(
             next[a_first] = after_b;
             next[before_b] = a_last;
             kept.extend([a_first, a_last, after_b, before_b]);
-            groups.join(rings[a.ring].0, rings[b.ring].0);
+            groups.join(rings[a.ring].polygon, rings[b.ring].polygon);
         }
         if kept.iter().any(|&g| dropped[g]) {
             return None;
@@ -153,7 +136,7 @@ pub(crate) fn closed_without_union<S: Fn(f64) -> bool, E: Fn(f64) -> bool>(
             }
             visited[g] = true;
             let (r, local) = (ring_of[g], g - offset[ring_of[g]]);
-            let p = rings[r].2.points[local];
+            let p = rings[r].points[local];
             if ring.last() != Some(&p) {
                 ring.push(p);
             }
@@ -169,7 +152,7 @@ pub(crate) fn closed_without_union<S: Fn(f64) -> bool, E: Fn(f64) -> bool>(
         if ring.len() < 3 {
             return None;
         }
-        traced.push((groups.find(rings[ring_of[start]].0), ring));
+        traced.push((groups.find(rings[ring_of[start]].polygon), ring));
     }
 
     // Counter-clockwise outer rings, as the union gives them.
@@ -232,32 +215,29 @@ fn without_straight_points(ring: Vec<DVec2>) -> Vec<DVec2> {
     ring.into_iter().zip(keep).filter_map(|(p, k)| k.then_some(p)).collect()
 }
 
-/// Every ring's maximal runs of two or more band vertices on the line
-/// `on(x)`, as mapped indices. `None` for a ring lying wholly on it.
-fn runs(rings: &[(usize, &[DVec2], &MappedRing)], on: &impl Fn(f64) -> bool) -> Option<Vec<Run>> {
+/// Every outline's maximal runs of two or more points on one line. `None`
+/// for an outline lying wholly on one.
+fn runs(rings: &[Outline]) -> Option<Vec<Run>> {
     let mut out = Vec::new();
-    for (r, (_, band_ring, ring)) in rings.iter().enumerate() {
-        let n = band_ring.len();
-        let flags: Vec<bool> = band_ring.iter().map(|p| on(p.x)).collect();
-        if flags.iter().all(|&f| f) {
-            return None;
-        }
-        let Some(off) = flags.iter().position(|&f| !f) else { continue };
-        // Positions after `off`, which is off the line, so no run wraps past it.
+    for (r, ring) in rings.iter().enumerate() {
+        let (n, lines) = (ring.points.len(), &ring.lines);
+        // Start after a point that ends a run (off every line, or on
+        // another line than the next), so no run wraps past it.
+        let off = (0..n).find(|&i| lines[i].is_none() || lines[i] != lines[(i + 1) % n])?;
         let mut k = 1;
-        while k < n {
+        while k <= n {
             let first = (off + k) % n;
-            if !flags[first] {
+            let Some(line) = lines[first] else {
                 k += 1;
                 continue;
-            }
+            };
             let mut last = first;
-            while k + 1 < n && flags[(off + k + 1) % n] {
+            while k < n && lines[(off + k + 1) % n] == Some(line) {
                 k += 1;
                 last = (off + k) % n;
             }
             if last != first {
-                out.push(Run { ring: r, first: ring.origins[first], last: ring.origins[last] });
+                out.push(Run { ring: r, first, last });
             }
             k += 1;
         }
@@ -293,44 +273,50 @@ mod tests {
         }
     }
 
-    fn mapped(band: &Region, map: &dyn Fn(DVec2) -> DVec2) -> Vec<Vec<MappedRing>> {
-        band.polygons
-            .iter()
-            .map(|p| {
-                std::iter::once(&p.outer)
-                    .chain(&p.holes)
-                    .map(|ring| {
-                        let (points, origins) = refine_mapped_indexed(ring, map, 0.5, 1e-4);
-                        MappedRing { points, origins }
-                    })
-                    .collect()
-            })
-            .collect()
+    /// The outlines of `band` mapped by `map`, with the points from the
+    /// band's start and end lines (`x = 0` and `x = length`) on lines 0 and 1.
+    fn outlines(band: &Region, map: &dyn Fn(DVec2) -> DVec2, length: Option<f64>) -> Vec<Outline> {
+        let mut out = Vec::new();
+        for (p, polygon) in band.polygons.iter().enumerate() {
+            for ring in std::iter::once(&polygon.outer).chain(&polygon.holes) {
+                let (points, origins) = refine_mapped_indexed(ring, map, 0.5, 1e-4);
+                let mut lines = vec![None; points.len()];
+                if let Some(length) = length {
+                    for (q, &i) in ring.iter().zip(&origins) {
+                        lines[i] = if q.x == 0.0 {
+                            Some(0)
+                        } else if (q.x - length).abs() <= 1e-9 * length {
+                            Some(1)
+                        } else {
+                            None
+                        };
+                    }
+                }
+                out.push(Outline { polygon: p, points, lines });
+            }
+        }
+        out
     }
 
-    fn ends(length: f64) -> Option<Ends<impl Fn(f64) -> bool, impl Fn(f64) -> bool>> {
-        Some(Ends { at_start: |x: f64| x == 0.0, at_end: move |x: f64| (x - length).abs() <= 1e-9 * length })
+    fn joined(band: &Region, map: &dyn Fn(DVec2) -> DVec2, length: Option<f64>) -> Option<Region> {
+        joined_without_union(band.polygons.len(), &outlines(band, map, length))
     }
 
     #[test]
     fn a_strip_round_a_loop_closes_into_a_ring_with_its_holes() {
         let length = 40.0;
         let band = strip(length, 6);
-        let region = closed_without_union(&band, &mapped(&band, &around(length)), ends(length)).expect("welded");
+        let region = joined(&band, &around(length), Some(length)).expect("joined");
         // One part, whose outline is the loop's outside; its inside and the six holes are holes.
         assert_eq!(region.polygons.len(), 1);
         assert_eq!(region.polygons[0].holes.len(), 7);
         assert!(region.sanity_check().is_ok(), "{:?}", region.sanity_check());
         // The same as the union, counted independently.
-        let union = crate::geom::union(&[&Region::new(
-            mapped(&band, &around(length))
-                .into_iter()
-                .map(|rings| Polygon {
-                    outer: rings[0].points.clone(),
-                    holes: rings[1..].iter().map(|r| r.points.clone()).collect(),
-                })
-                .collect(),
-        )]);
+        let mapped = outlines(&band, &around(length), None);
+        let union = crate::geom::union(&[&Region::new(vec![Polygon {
+            outer: mapped[0].points.clone(),
+            holes: mapped[1..].iter().map(|r| r.points.clone()).collect(),
+        }])]);
         assert_eq!(union.polygons.len(), 1);
         assert_eq!(union.polygons[0].holes.len(), 7);
         assert!((union.area() - region.area()).abs() < 1e-6 * union.area());
@@ -340,9 +326,7 @@ mod tests {
     fn an_open_band_keeps_its_polygons() {
         let band = strip(20.0, 3);
         let bend = |p: DVec2| DVec2::new(p.x, p.y + 0.01 * p.x * p.x);
-        type Line = fn(f64) -> bool;
-        let none: Option<Ends<Line, Line>> = None;
-        let region = closed_without_union(&band, &mapped(&band, &bend), none).expect("clean");
+        let region = joined(&band, &bend, None).expect("clean");
         assert_eq!(region.polygons.len(), 1);
         assert_eq!(region.polygons[0].holes.len(), 3);
     }
@@ -351,7 +335,7 @@ mod tests {
     fn outlines_that_overlap_once_mapped_are_left_to_the_union() {
         // Longer than the loop: the band's end runs over its start.
         let band = strip(40.0, 2);
-        assert!(closed_without_union(&band, &mapped(&band, &around(30.0)), ends(40.0)).is_none());
+        assert!(joined(&band, &around(30.0), Some(40.0)).is_none());
     }
 
     #[test]
@@ -361,6 +345,6 @@ mod tests {
         let mut band = strip(length, 2);
         band.polygons[0].outer[2].y += 1e-3;
         band.polygons[0].outer[1].y += 1e-3;
-        assert!(closed_without_union(&band, &mapped(&band, &around(length)), ends(length)).is_none());
+        assert!(joined(&band, &around(length), Some(length)).is_none());
     }
 }
