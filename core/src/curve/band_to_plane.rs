@@ -108,12 +108,8 @@ pub fn map_along(band_region: &Region, scale: f64, curve: &Curve) -> PlanarPatte
         Outline { polygon, points, lines }
     };
     // Rings are mapped on every core.
-    let rings: Vec<(usize, &Vec<DVec2>)> = band_region
-        .polygons
-        .iter()
-        .enumerate()
-        .flat_map(|(p, polygon)| std::iter::once(&polygon.outer).chain(&polygon.holes).map(move |r| (p, r)))
-        .collect();
+    let rings: Vec<(usize, &Vec<DVec2>)> =
+        band_region.polygons.iter().enumerate().flat_map(|(p, polygon)| polygon.rings().map(move |r| (p, r))).collect();
     let outlines: Vec<Outline> = rings.into_par_iter().map(outline).collect();
     let region = match joined_without_union(band_region.polygons.len(), &outlines) {
         Some(region) => region,

@@ -204,7 +204,7 @@ fn sweep_crossings<R: AsRef<[DVec2]>>(
 /// // The second square overlaps the first; the third is apart.
 /// assert_eq!(crossing_rings(&[square(0.0), square(0.5), square(3.0)]), vec![true, true, false]);
 /// ```
-pub fn crossing_rings(rings: &[Vec<DVec2>]) -> Vec<bool> {
+pub fn crossing_rings<R: AsRef<[DVec2]>>(rings: &[R]) -> Vec<bool> {
     let mut crossing = vec![false; rings.len()];
     sweep_crossings(rings, |r, s, _, _| {
         crossing[r] = true;

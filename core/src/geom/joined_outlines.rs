@@ -38,7 +38,7 @@ struct Run {
     last: usize,
 }
 
-/// The region made of `outlines` (from `polygons` clean, disjoint
+/// The region made of the outlines `rings` (from `polygons` clean, disjoint
 /// polygons), each run joined to the run that has the same two end points
 /// in the other order. `None` where the result would not be clean: outlines
 /// that cross or touch, a component with more or fewer than one outer
@@ -46,8 +46,7 @@ struct Run {
 ///
 /// Outlines keep their orientation when the sum of their areas is
 /// positive, and are all reversed when it is negative (a mirroring map).
-pub(crate) fn joined_without_union(polygons: usize, outlines: &[Outline]) -> Option<Region> {
-    let rings = outlines;
+pub(crate) fn joined_without_union(polygons: usize, rings: &[Outline]) -> Option<Region> {
     if rings.iter().any(|r| r.points.len() < 3 || r.lines.len() != r.points.len() || r.polygon >= polygons) {
         return None;
     }
@@ -186,7 +185,7 @@ pub(crate) fn joined_without_union(polygons: usize, outlines: &[Outline]) -> Opt
         polygons[*polygon_of_group.get(&group)?].holes.push(ring);
     }
     let region = Region { polygons };
-    let all: Vec<Vec<DVec2>> = region.rings().cloned().collect();
+    let all: Vec<&Vec<DVec2>> = region.rings().collect();
     if rings_meet(&all) {
         return None;
     }
@@ -278,7 +277,7 @@ mod tests {
     fn outlines(band: &Region, map: &dyn Fn(DVec2) -> DVec2, length: Option<f64>) -> Vec<Outline> {
         let mut out = Vec::new();
         for (p, polygon) in band.polygons.iter().enumerate() {
-            for ring in std::iter::once(&polygon.outer).chain(&polygon.holes) {
+            for ring in polygon.rings() {
                 let (points, origins) = refine_mapped_indexed(ring, map, 0.5, 1e-4);
                 let mut lines = vec![None; points.len()];
                 if let Some(length) = length {

@@ -25,13 +25,13 @@ const MAX_CELLS_PER_EDGE: usize = 8;
 /// // Touching at a corner counts.
 /// assert!(rings_meet(&[square(0.0), square(1.0)]));
 /// ```
-pub fn rings_meet(rings: &[Vec<DVec2>]) -> bool {
-    let edges: usize = rings.iter().map(Vec::len).sum();
-    let points = || rings.iter().flatten();
+pub fn rings_meet<R: AsRef<[DVec2]> + Sync>(rings: &[R]) -> bool {
+    let edges: usize = rings.iter().map(|r| r.as_ref().len()).sum();
+    let points = || rings.iter().flat_map(|r| r.as_ref());
     let (Some(min), Some(max)) = (points().copied().reduce(DVec2::min), points().copied().reduce(DVec2::max)) else {
         return false;
     };
-    let length: f64 = rings.iter().map(|r| super::ring_perimeter(r)).sum();
+    let length: f64 = rings.iter().map(|r| super::ring_perimeter(r.as_ref())).sum();
     // Cells about two mean edges across, but never more than 4096 along a side.
     let cell = (2.0 * length / edges.max(1) as f64).max((max - min).max_element() / 4096.0);
     if !(cell.is_finite() && cell > 0.0) {
@@ -40,6 +40,7 @@ pub fn rings_meet(rings: &[Vec<DVec2>]) -> bool {
     let index = |p: DVec2| (((p.x - min.x) / cell) as u64, ((p.y - min.y) / cell) as u64);
     let mut entries: Vec<(u64, u32, u32)> = Vec::with_capacity(2 * edges);
     for (r, ring) in rings.iter().enumerate() {
+        let ring = ring.as_ref();
         let n = ring.len();
         for i in 0..n {
             let (a, b) = (ring[i], ring[(i + 1) % n]);
@@ -56,12 +57,12 @@ pub fn rings_meet(rings: &[Vec<DVec2>]) -> bool {
     }
     entries.par_sort_unstable();
     let edge = |r: u32, i: u32| {
-        let ring = &rings[r as usize];
+        let ring = rings[r as usize].as_ref();
         [ring[i as usize], ring[(i as usize + 1) % ring.len()]]
     };
     entries.par_chunk_by(|a, b| a.0 == b.0).any(|cell| {
         cell.iter().enumerate().any(|(k, &(_, r, i))| {
-            let n = rings[r as usize].len() as u32;
+            let n = rings[r as usize].as_ref().len() as u32;
             cell[k + 1..].iter().any(|&(_, s, j)| {
                 let neighbours = r == s && ((i + 1) % n == j || (j + 1) % n == i);
                 !neighbours && segments_cross(edge(r, i), edge(s, j))

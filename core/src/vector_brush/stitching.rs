@@ -188,7 +188,7 @@ fn joined_pieces(polygons: Vec<Polygon>, seams_u: &[f64]) -> Region {
     let outlines: Vec<Outline> = polygons
         .iter()
         .enumerate()
-        .flat_map(|(p, polygon)| std::iter::once(&polygon.outer).chain(&polygon.holes).map(move |ring| (p, ring)))
+        .flat_map(|(p, polygon)| polygon.rings().map(move |ring| (p, ring)))
         .map(|(polygon, ring)| Outline {
             polygon,
             points: ring.clone(),
