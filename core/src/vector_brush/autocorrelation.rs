@@ -100,6 +100,38 @@ impl Autocorrelation {
 mod tests {
     use super::*;
 
+    /// The sums as the definition gives them, lag by lag.
+    fn sums_by_definition(sequence: &[usize], similarity: &Similarity) -> [u32; LAGS] {
+        let mut sums = [0u32; LAGS];
+        for (lag, sum) in sums.iter_mut().enumerate().map(|(k, s)| (k + 1, s)) {
+            for i in lag..sequence.len() {
+                let d = sequence[i].min(255).abs_diff(sequence[i - lag].min(255));
+                *sum += u32::from(similarity.table[d]);
+            }
+        }
+        sums
+    }
+
+    #[test]
+    fn running_sums_agree_with_the_definition() {
+        let mut state = 7u64;
+        let sequence: Vec<usize> = (0..300)
+            .map(|_| {
+                state = crate::random::splitmix64(state);
+                (state % 12) as usize
+            })
+            .collect();
+        for sigma in [0.5, 1.0, 40.0] {
+            let similarity = Similarity::new(sigma);
+            for len in [0, 1, 5, 31, 32, 33, 300] {
+                let running = Autocorrelation::of(&sequence[..len], &similarity);
+                let expected = sums_by_definition(&sequence[..len], &similarity);
+                assert_eq!(running.sums, expected, "σ {sigma}, {len} pieces");
+                assert_eq!(running.max, expected.iter().copied().max().unwrap_or(0));
+            }
+        }
+    }
+
     #[test]
     fn the_penalty_keeps_growing_on_long_repetitions() {
         // 2000 copies of one piece: every lag matches 2000 times, far past
