@@ -3,8 +3,9 @@
 //!
 //! Three measures of the result that the quilting never reads: `bare`, the
 //! share of the base's area (all but the faces it stands on) farther than
-//! 1.5, 3 and 5 mm from every texture vertex (and at 1.5 mm, of the side's
-//! top 10 mm); `runs`, the median length of the elements along their longest axis, mm
+//! 1, 1.5 and 3 mm from every texture vertex (and at 1.5 mm, of the side's
+//! top 10 mm; a weave missing rows between its threads up the model shows
+//! at 1 mm, where every point still lies within 1.5 mm of a thread); `runs`, the median length of the elements along their longest axis, mm
 //! (woven threads broken into short runs show as short ones); and `tilt`,
 //! the median angle between an element's longest axis and the nearer of
 //! round the `z` axis or across that, 0° to 45° (threads running round a
@@ -42,7 +43,7 @@ fn main() {
     }
     let vertices: Vec<DVec3> = quilt.elements.iter().flat_map(|e| e.vertices.iter().copied()).collect();
     let bare: Vec<String> =
-        [1.5, 3.0, 5.0].iter().map(|&d| format!("{:.3}", bare_share(&surface, &vertices, d))).collect();
+        [1.0, 1.5, 3.0].iter().map(|&d| format!("{:.3}", bare_share(&surface, &vertices, d))).collect();
     let bare = bare.join("/");
     // The side just under the rim: faces not facing up or down, within
     // 10 mm of the top.
