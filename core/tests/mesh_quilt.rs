@@ -348,7 +348,8 @@ fn woven_threads_run_on_round_a_post_across_patches() {
 /// each such thread leaves a hole in the weave; bent over or under where it
 /// crosses, it closes it. Measured by the base's area far from any thread,
 /// not by what merging counted: 0.071 before threads bent (0.047 to 0.062
-/// for seeds 2 to 4), 0.020 after (0.022 to 0.040).
+/// for seeds 2 to 4), 0.020 after (0.022 to 0.040), 0.017 since a thread
+/// may rise by its height to pass over another (97 → 73 left out).
 #[test]
 fn woven_threads_leave_few_holes_round_a_bellied_base() {
     let base = turned(&[(8.0, 0.0), (12.0, 7.0), (12.0, 13.0), (7.0, 20.0), (7.0, 24.0), (0.0, 24.0)]);
