@@ -5,7 +5,8 @@
 //! share of the base's area (all but the faces it stands on) farther than
 //! 1, 1.5 and 3 mm from every texture vertex (and at 1.5 mm, of the side's
 //! top 10 mm; a weave missing rows between its threads up the model shows
-//! at 1 mm, where every point still lies within 1.5 mm of a thread); `runs`, the median length of the elements along their longest axis, mm
+//! at 1 mm, where every point still lies within 1.5 mm of a thread);
+//! `runs`, the median length of the elements along their longest axis, mm
 //! (woven threads broken into short runs show as short ones); and `tilt`,
 //! the median angle between an element's longest axis and the nearer of
 //! round the `z` axis or across that, 0° to 45° (threads running round a
