@@ -89,3 +89,40 @@ fn a_vertex_on_another_rings_edge_meshes() {
     let region = Region::new(vec![Polygon { outer: square, holes: vec![] }, Polygon { outer: tip, holes: vec![] }]);
     check(&region, 2);
 }
+
+/// Distance from a point to a segment.
+fn to_segment(p: DVec2, a: DVec2, b: DVec2) -> f64 {
+    let d = b - a;
+    let t = ((p - a).dot(d) / d.length_squared()).clamp(0.0, 1.0);
+    (a + d * t).distance(p)
+}
+
+/// The smallest distance between two closed rings' vertices and edges.
+fn gap(r: &[DVec2], s: &[DVec2]) -> f64 {
+    let one_way = |r: &[DVec2], s: &[DVec2]| {
+        r.iter()
+            .flat_map(|&p| (0..s.len()).map(move |j| (p, j)))
+            .map(|(p, j)| to_segment(p, s[j], s[(j + 1) % s.len()]))
+            .fold(f64::INFINITY, f64::min)
+    };
+    one_way(r, s).min(one_way(s, r))
+}
+
+#[test]
+fn a_tip_touching_the_middle_of_another_parts_edge_is_moved_off_it() {
+    // A spike whose tip lies on the middle of a bar's top edge, not on one
+    // of its vertices. Parts that only touch are apart in the plan, and
+    // mapped onto a curve, rounding may push the tip across the edge: the
+    // tip must come a step away from the bar, which stays whole.
+    let bar = vec![v(0.0, 0.0), v(10.0, 0.0), v(10.0, 1.0), v(0.0, 1.0)];
+    let spike = vec![v(4.0, 1.0), v(5.0, 4.0), v(3.0, 4.0)];
+    assert_eq!(gap(&bar, &spike), 0.0);
+    let region = Region::new(vec![Polygon { outer: bar, holes: vec![] }, Polygon { outer: spike, holes: vec![] }]);
+    let step = 1e-3;
+    let separated = tracery_core::geom::separate_contacts(&region, step);
+    let (bar, spike) = (&separated.polygons[0].outer, &separated.polygons[1].outer);
+    assert!(gap(bar, spike) > 0.5 * step, "{}", gap(bar, spike));
+    assert!((separated.area() - region.area()).abs() < 10.0 * step, "only a hair moved");
+    assert_eq!(count_topology(&separated).components, 2);
+    check(&separated, 2);
+}

@@ -36,6 +36,32 @@ pub const MAPPING_TOLERANCE_MM: f64 = 0.005;
 /// output never intersects itself. Where nothing overlaps, the mapped rings
 /// are already clean and a loop's two ends are joined without one.
 pub fn map_along(band_region: &Region, scale: f64, curve: &Curve) -> PlanarPattern {
+    map_along_within(band_region, scale, curve, MAPPING_TOLERANCE_MM)
+}
+
+/// [`map_along`] with the mapped outlines within `tolerance_mm` of the true
+/// images of the band's edges, instead of [`MAPPING_TOLERANCE_MM`].
+///
+/// Where the curve turns, the inner side of the band is squeezed along it;
+/// a neck of material squeezed to less than about twice the tolerance can
+/// have its two sides' chords cross, and the union then cuts it through.
+/// A finer tolerance keeps the neck whole, at the cost of more points.
+///
+/// ```
+/// use tracery_core::curve::{Curve, map_along_within};
+/// use tracery_core::geom::{Polygon, Region};
+/// use tracery_core::DVec2;
+/// let bar = Region::new(vec![Polygon {
+///     outer: vec![DVec2::new(0.0, -1.0), DVec2::new(100.0, -1.0), DVec2::new(100.0, 1.0), DVec2::new(0.0, 1.0)],
+///     holes: vec![],
+/// }]);
+/// let curve = Curve::circle(100.0 / std::f64::consts::TAU).unwrap();
+/// let coarse = map_along_within(&bar, 1.0, &curve, 0.05);
+/// let fine = map_along_within(&bar, 1.0, &curve, 0.0005);
+/// let points = |r: &Region| r.rings().map(Vec::len).sum::<usize>();
+/// assert!(points(&fine.region) > points(&coarse.region));
+/// ```
+pub fn map_along_within(band_region: &Region, scale: f64, curve: &Curve, tolerance_mm: f64) -> PlanarPattern {
     let mut warnings = Vec::new();
     let half = band_region.reach_from_axis() * scale;
     let length = curve.length();
@@ -100,7 +126,7 @@ pub fn map_along(band_region: &Region, scale: f64, curve: &Curve) -> PlanarPatte
         }
     };
     let outline = |(polygon, r): (usize, &Vec<DVec2>)| {
-        let (points, origins) = refine_mapped_indexed(r, place, step / scale, MAPPING_TOLERANCE_MM);
+        let (points, origins) = refine_mapped_indexed(r, place, step / scale, tolerance_mm);
         let mut lines = vec![None; points.len()];
         for (p, &i) in r.iter().zip(&origins) {
             lines[i] = line_of(p.x);

@@ -92,10 +92,31 @@ pub fn separate_touching_rings(rings: &mut [Vec<DVec2>], step: f64, round: impl 
     }
 }
 
+/// Fraction of `step` within which a vertex counts as lying on an edge
+/// ([`super::insert_edge_contacts`]): far below any feature, far above
+/// the rounding of the maps that put it there.
+const CONTACT_TOLERANCE: f64 = 1e-3;
+
+/// [`separate_touching`], with a vertex that touches another ring's edge
+/// (not one of its vertices) counted as a touching point too: it is put
+/// into that edge first ([`super::insert_edge_contacts`]). Slower: every
+/// vertex is looked for on the edges near it.
+pub fn separate_contacts(region: &Region, step: f64) -> Region {
+    let mut rings: Vec<Vec<DVec2>> = region.rings().cloned().collect();
+    super::insert_edge_contacts(&mut rings, CONTACT_TOLERANCE * step);
+    separated(region, rings, step)
+}
+
 /// The region with its touching points moved about `step` apart
 /// ([`separate_touching_rings`]), in the region's own units.
 pub fn separate_touching(region: &Region, step: f64) -> Region {
-    let mut rings: Vec<Vec<DVec2>> = region.rings().cloned().collect();
+    let rings: Vec<Vec<DVec2>> = region.rings().cloned().collect();
+    separated(region, rings, step)
+}
+
+/// `region` with its rings replaced by `rings` (in [`Region::rings`] order)
+/// separated where they touch.
+fn separated(region: &Region, mut rings: Vec<Vec<DVec2>>, step: f64) -> Region {
     separate_touching_rings(&mut rings, step, |p| p);
     let mut rings = rings.into_iter();
     let polygons = region

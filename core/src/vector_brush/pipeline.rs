@@ -10,9 +10,12 @@ use super::{
     SliceOptions, Solution, SolveError, SolveOptions, spread_offsets, stitch,
 };
 use crate::control::{Control, MaybeCancelled};
-use crate::curve::{Curve, CurveError, MAPPING_TOLERANCE_MM, PlanarPattern, map_along, planar_topology_of_clean};
+use crate::curve::{
+    Curve, CurveError, MAPPING_TOLERANCE_MM, PlanarPattern, map_along_within, planar_topology_of_clean,
+};
 use crate::geom::{
-    PatternTopology, Region, close_narrow_gaps, count_topology, separate_touching, union, without_slivers,
+    PatternTopology, Region, close_narrow_gaps, count_topology, separate_contacts, separate_touching, union,
+    without_slivers,
 };
 use crate::mesh::MeshError;
 use crate::report::{Timings, Warning};
@@ -122,6 +125,10 @@ pub const RESOLUTION_MM: f64 = 0.01;
 /// a little more than the band's half-height, so that its inner edge turns
 /// the corner instead of folding over itself.
 pub const CORNER_RADIUS: f64 = 1.25;
+
+/// How many times finer the chords are when a pattern is mapped again
+/// because its count differed from the plan (`map_along_within`).
+const FINER_MAPPING: f64 = 25.0;
 
 /// The first `count` of the alternatives (see [`Settings::alternative`])
 /// from `exemplar` along `curve`, sharing one analysis of the exemplar:
@@ -293,11 +300,26 @@ pub(crate) fn laid_out(
             // Parts that only touch at a point are apart in the plan; mapped
             // onto a curve, rounding could merge them, so they are moved a
             // resolution apart here, once.
-            band.region = separate_touching(&band.region, RESOLUTION_MM / scale);
-            let mut planar = map_along(&band.region, scale, curve);
-            planar.region = without_slivers(&planar.region, RESOLUTION_MM);
-            // Straight from the union in `map_along`, less slivers: clean.
-            let topology = planar_topology_of_clean(&planar.region, curve);
+            let stitched = std::mem::take(&mut band.region);
+            band.region = separate_touching(&stitched, RESOLUTION_MM / scale);
+            let mapped = |band: &Region, tolerance_mm: f64| {
+                let mut planar = map_along_within(band, scale, curve, tolerance_mm);
+                planar.region = without_slivers(&planar.region, RESOLUTION_MM);
+                // Straight from the union in `map_along`, less slivers: clean.
+                let topology = planar_topology_of_clean(&planar.region, curve);
+                (planar, topology)
+            };
+            let planned = (solution.components as usize, solution.holes as usize);
+            let (mut planar, mut topology) = mapped(&band.region, MAPPING_TOLERANCE_MM);
+            if (topology.components, topology.holes) != planned {
+                // Two rare ways the mapping can differ from the plan, both
+                // mended at a cost only paid here: a part's tip touching the
+                // middle of another's edge (thinned outlines leave no shared
+                // point to separate), and a neck squeezed on the inside of a
+                // turn cut through by the chords of its two sides.
+                band.region = separate_contacts(&stitched, RESOLUTION_MM / scale);
+                (planar, topology) = mapped(&band.region, MAPPING_TOLERANCE_MM / FINER_MAPPING);
+            }
             (band, planar, topology)
         });
 
