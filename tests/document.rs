@@ -34,12 +34,16 @@ fn a_project_saved_before_versioning_opens_with_its_settings() {
     assert_eq!(doc.next_id, 3);
     assert_eq!(doc.imported.len(), 1);
 
-    // The first curve used every default of that version.
+    // The first curve used every default of that version, kept as saved:
+    // the variety default has since gone from 0.3 to 0.8, and an old
+    // project must still give the pattern it gave.
     let first = vector(&doc.curves[0].mode);
     assert!(doc.curves[0].closed);
     assert_eq!(doc.curves[0].points.len(), 16);
     assert_eq!(first.exemplar, ExemplarRef::Builtin("lace".into()));
-    assert_eq!(first.settings, Settings::default());
+    let mut then = Settings::default();
+    then.variety = 0.3;
+    assert_eq!(first.settings, then);
 
     // The second set everything by hand.
     let second = vector(&doc.curves[1].mode);

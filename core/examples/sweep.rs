@@ -130,8 +130,8 @@ struct Run {
     avoidable: bool,
 }
 
-/// The variety weight of the probe for short periods: a hundred times the
-/// default, so that variety outweighs every seam.
+/// The variety weight of the probe for short periods: far above the default
+/// (0.8), so that variety outweighs every seam.
 const PROBE_VARIETY: f64 = 30.0;
 
 fn short_period(run: &Run) -> bool {

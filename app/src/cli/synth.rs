@@ -43,7 +43,7 @@ pub struct BrushArgs {
     /// On a loop, the pattern runs all around it: true or false; the flag alone means true [default: true].
     #[arg(long, num_args = 0..=1, default_missing_value = "true")]
     pub closed_pattern: Option<bool>,
-    /// Variety (autocorrelation penalty weight) [default: 0.3].
+    /// Variety (autocorrelation penalty weight) [default: 0.8].
     #[arg(long)]
     pub variety: Option<f64>,
     /// Slicing: "topology" or "uniform:T" (T cut lines) [default: topology].

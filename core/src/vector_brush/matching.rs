@@ -11,6 +11,21 @@ pub const MATCH_WEIGHT: f64 = 0.8;
 /// fits), and end caps do not line up along the curve for free.
 pub const BREAK_COST: f64 = 1.0;
 
+/// Weight of the lean term: what stitching a seam leans its two pieces by,
+/// against the endpoint and tangent terms. Chosen on the corpus sweep
+/// (`docs/quality.md`, *Seams that lean*): higher weights shear less but
+/// repeat more, the solver giving up variety for seams that fit.
+pub const LEAN_WEIGHT: f64 = 0.5;
+
+/// Leans up to this angle cost nothing: the variety of a pattern comes from
+/// seams that do not fit exactly, and a slight lean does not show.
+pub const LEAN_FREE_DEG: f64 = 30.0;
+
+/// Steepest slope the stitch gives a piece per unit of an endpoint's move
+/// across the band, over the piece's width: the side maps are blended with a
+/// smoothstep, whose slope peaks at 1.5, and each side moves half the gap.
+const LEAN_PER_GAP: f64 = 0.75;
+
 /// How well the right side of one piece fits the left side of another.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct PairCost {
@@ -20,9 +35,19 @@ pub struct PairCost {
     pub d_match: f64,
     /// Sum over matched endpoints of `|1 - g_a · g_b|` for their boundary tangents.
     pub d_tangent: f64,
+    /// How far stitching leans the two pieces: over matched endpoints, the
+    /// mean of both pieces' `sin²` of the lean angle (the endpoint's move
+    /// over the piece's width), past [`LEAN_FREE_DEG`] and rescaled to reach
+    /// 1 at 90°. Summed like `d_tangent`.
+    ///
+    /// `d_match` measures the gap against the exemplar's height, so a gap
+    /// that two wide pieces take up without a trace costs as much as one
+    /// that a sliver of a piece must take up alone, leaning it by 70° or
+    /// more; this term tells them apart.
+    pub d_lean: f64,
     /// The best vertical offset of the second piece relative to the first, in exemplar units.
     pub tau: f64,
-    /// `α·d_match + (1-α)·d_tangent`.
+    /// `α·d_match + (1-α)·d_tangent + LEAN_WEIGHT·d_lean`.
     pub cost: f64,
 }
 
@@ -38,7 +63,7 @@ impl PairCost {
         if m == 0 {
             // Nothing to join: the pieces just sit side by side (stitching
             // keeps them apart, so the break is a real one).
-            return Some(PairCost { d_match: 0.0, d_tangent: 0.0, tau: 0.0, cost: BREAK_COST });
+            return Some(PairCost { d_match: 0.0, d_tangent: 0.0, d_lean: 0.0, tau: 0.0, cost: BREAK_COST });
         }
         let tau = ya.iter().zip(&yb).map(|(ra, lb)| ra - lb).sum::<f64>() / m as f64;
         let scale = exemplar_height.max(f64::MIN_POSITIVE);
@@ -46,7 +71,24 @@ impl PairCost {
         let ga = a.right.iter().flat_map(|p| [p.top_tangent, p.bottom_tangent]);
         let gb = b.left.iter().flat_map(|p| [p.top_tangent, p.bottom_tangent]);
         let d_tangent = ga.zip(gb).map(|(x, y)| (1.0 - x.dot(y)).abs()).sum::<f64>();
-        let cost = MATCH_WEIGHT * d_match + (1.0 - MATCH_WEIGHT) * d_tangent;
-        Some(PairCost { d_match, d_tangent, tau, cost })
+        let lean = |gap: f64, width: f64| {
+            let slope = LEAN_PER_GAP * gap / width.max(f64::MIN_POSITIVE);
+            // sin² of the lean angle: bounded, so that however thin a sliver
+            // is, its seam costs no more than a few poor tangents; leans the
+            // eye does not notice cost nothing.
+            let sin2 = if slope.is_finite() { slope * slope / (1.0 + slope * slope) } else { 1.0 };
+            let free = LEAN_FREE_DEG.to_radians().sin().powi(2);
+            ((sin2 - free) / (1.0 - free)).max(0.0)
+        };
+        let d_lean = ya
+            .iter()
+            .zip(&yb)
+            .map(|(ra, lb)| {
+                let gap = lb + tau - ra;
+                0.5 * (lean(gap, a.width) + lean(gap, b.width))
+            })
+            .sum::<f64>();
+        let cost = MATCH_WEIGHT * d_match + (1.0 - MATCH_WEIGHT) * d_tangent + LEAN_WEIGHT * d_lean;
+        Some(PairCost { d_match, d_tangent, d_lean, tau, cost })
     }
 }

@@ -63,7 +63,7 @@ impl Default for Settings {
             holes: Target::Any,
             closed_pattern: true,
             band_mm: 10.0,
-            variety: 0.3,
+            variety: 0.8,
             scale: 1.0,
             slicing: SlicingMode::Topology,
             min_portal_mm: 0.0,

@@ -140,6 +140,7 @@ pub struct SolveOptions {
     /// [`crate::vector_brush::LAGS`]) pulled the built-in lace's alternatives
     /// back to the same few varied sequences (two of six differed over 21%
     /// of a 150 mm line; with two, every pair differs over 46% or more).
+    /// Set against a variety weight of 0.3, it grows in proportion above it.
     pub diversity: f64,
     /// On open curves, pieces the pattern must begin with (a pattern
     /// growing while it is drawn keeps what is already laid): the search
