@@ -126,3 +126,23 @@ fn a_tip_touching_the_middle_of_another_parts_edge_is_moved_off_it() {
     assert_eq!(count_topology(&separated).components, 2);
     check(&separated, 2);
 }
+
+#[test]
+fn a_needle_thinner_than_f32_on_an_outline_meshes_as_one_body() {
+    // The shape of a tip on a stitched and mapped corpus pattern
+    // (vectorian159 along a wave): the outline runs 0.05 mm out to a tip
+    // and back with its two sides 2e-7 mm apart. Rounded to `f32`, the way
+    // back crossed the way out and the tip meshed as a body of its own.
+    let outer = vec![
+        v(58.4, 12.4),
+        v(64.222763487, 12.4),
+        v(64.222763487, 12.539346024),
+        v(64.228464581, 12.492905011),
+        v(64.200664302, 12.719373910),
+        v(64.18, 16.8),
+        v(58.4, 16.8),
+    ];
+    let region = Region::new(vec![Polygon { outer, holes: vec![] }]);
+    assert_eq!(count_topology(&region).components, 1);
+    check(&region, 1);
+}

@@ -12,6 +12,11 @@ use crate::geom::{Rect, Region};
 /// How far apart parts that touch at a single point are moved, in mm.
 const TOUCH_GAP_MM: f64 = 1e-3;
 
+/// Spikes narrower than this at their base are dropped before meshing
+/// ([`super::without_needles`]): far below any feature a printer or a laser
+/// makes, and above the rounding of `f32` for coordinates up to about 800 mm.
+const NEEDLE_MM: f64 = 1e-4;
+
 /// Why a mesh could not be made.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
 #[non_exhaustive]
@@ -158,6 +163,7 @@ fn extrude_exactly(
             while r.len() > 1 && r.first() == r.last() {
                 r.pop();
             }
+            super::without_needles(&mut r, NEEDLE_MM);
             r
         })
         .filter(|r| r.len() >= 3)
