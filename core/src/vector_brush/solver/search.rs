@@ -20,7 +20,6 @@ use crate::vector_brush::{Autocorrelation, MATCH_WEIGHT, PieceSet, Similarity, S
 
 /// The variety weight [`super::SolveOptions::diversity`] was set against.
 const DIVERSITY_VARIETY: f64 = 0.3;
-
 /// Everything one search needs that does not change while it runs.
 pub(super) struct Problem<'a> {
     set: &'a PieceSet,
@@ -453,9 +452,7 @@ pub(super) fn search_all(
     let jitter = 0.5 * mean_cost;
     // Exemplars whose seams all match perfectly still pay for reuse.
     let mean_cost = mean_cost.max(1e-3 * MATCH_WEIGHT);
-    // The diversity weight was set against the variety term at a weight of
-    // 0.3: a heavier variety term pulls alternatives back to the same
-    // varied sequences as strongly, so reuse costs as much more.
+    // A heavier variety term pulls alternatives back as much more strongly.
     let variety_pull = (options.variety / DIVERSITY_VARIETY).max(1.0);
     let mut reuse = vec![0.0; n * n];
     for earlier in &options.avoid {
