@@ -4,7 +4,7 @@
 //! checked for a watertight, manifold mesh with the right number of bodies.
 
 use glam::DVec2;
-use tracery_core::geom::{Polygon, Region, count_topology, without_slivers};
+use tracery_core::geom::{Polygon, Region, closest_on_segment, count_topology, without_slivers};
 use tracery_core::mesh::extrude;
 
 fn v(x: f64, y: f64) -> DVec2 {
@@ -90,19 +90,12 @@ fn a_vertex_on_another_rings_edge_meshes() {
     check(&region, 2);
 }
 
-/// Distance from a point to a segment.
-fn to_segment(p: DVec2, a: DVec2, b: DVec2) -> f64 {
-    let d = b - a;
-    let t = ((p - a).dot(d) / d.length_squared()).clamp(0.0, 1.0);
-    (a + d * t).distance(p)
-}
-
 /// The smallest distance between two closed rings' vertices and edges.
 fn gap(r: &[DVec2], s: &[DVec2]) -> f64 {
     let one_way = |r: &[DVec2], s: &[DVec2]| {
         r.iter()
             .flat_map(|&p| (0..s.len()).map(move |j| (p, j)))
-            .map(|(p, j)| to_segment(p, s[j], s[(j + 1) % s.len()]))
+            .map(|(p, j)| closest_on_segment(p, s[j], s[(j + 1) % s.len()]).1.distance(p))
             .fold(f64::INFINITY, f64::min)
     };
     one_way(r, s).min(one_way(s, r))

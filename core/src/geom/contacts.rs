@@ -1,6 +1,7 @@
 //! Vertices that lie on another ring's edge, made into shared vertices.
 //!
-//! Where two parts touch, one ring's vertex can sit on the middle of the
+//! Meshing needs it where rounding to `f32` put a vertex exactly on another
+//! ring's edge (a T-junction). The pattern stages need it where two parts touch, one ring's vertex can sit on the middle of the
 //! other's edge instead of on one of its vertices: stitching thins the
 //! points of a deformed outline, and may thin away the vertex that the other
 //! part's tip touched. [`super::separate_touching_rings`] only sees points
@@ -9,18 +10,22 @@
 //! edge turns the contact into a shared point, which is then separated like
 //! any other.
 
+use std::collections::HashMap;
+
 use glam::DVec2;
-use rayon::prelude::*;
 
-/// Most grid entries per edge, and per vertex in all: longer edges (long
-/// diagonals, mostly) are checked against every vertex instead, so a few
-/// of them do not fill the grid.
-const MAX_CELLS_PER_EDGE: usize = 256;
-const MAX_CELLS_PER_VERTEX: usize = 16;
+use super::ring_perimeter;
 
-/// Inserts into each ring's edges the vertices of `rings` (of other rings,
-/// or of the same ring away from that edge) that lie within `tolerance` of
-/// the edge's interior, at exactly the vertex's position.
+/// Most grid cells an edge looks at: an edge across much of the drawing is
+/// rare, and too costly to scan, so it is left as it is.
+const MAX_CELLS_PER_EDGE: i64 = 4096;
+
+/// Inserts into each ring's edges the vertices of `rings` (of any ring) that
+/// lie within `tolerance` of the edge's interior, at exactly the vertex's
+/// position, in order along the edge. With a tolerance of 0 only vertices
+/// exactly on the edge count: meshing uses that on coordinates rounded to
+/// `f32`, where the test is exact in `f64` (T-junctions, which the
+/// triangulation cannot keep as one constraint).
 ///
 /// ```
 /// use tracery_core::DVec2;
@@ -29,97 +34,51 @@ const MAX_CELLS_PER_VERTEX: usize = 16;
 /// let square = vec![DVec2::new(0.0, 0.0), DVec2::new(2.0, 0.0), DVec2::new(2.0, 2.0), DVec2::new(0.0, 2.0)];
 /// let tip = vec![DVec2::new(1.0, 2.0), DVec2::new(2.0, 3.0), DVec2::new(0.0, 3.0)];
 /// let mut rings = vec![square, tip];
-/// insert_edge_contacts(&mut rings, 1e-9);
+/// insert_edge_contacts(&mut rings, 0.0);
 /// assert_eq!(rings[0].len(), 5);
 /// assert!(rings[0].contains(&DVec2::new(1.0, 2.0)));
 /// ```
 pub fn insert_edge_contacts(rings: &mut [Vec<DVec2>], tolerance: f64) {
-    let vertices: usize = rings.iter().map(Vec::len).sum();
-    let points = || rings.iter().flatten();
-    let (Some(min), Some(max)) = (points().copied().reduce(DVec2::min), points().copied().reduce(DVec2::max)) else {
-        return;
-    };
-    let length: f64 = rings.iter().map(|r| super::ring_perimeter(r)).sum();
-    // Cells about two mean edges across, never more than 4096 along a side.
-    let cell = (2.0 * length / vertices.max(1) as f64).max((max - min).max_element() / 4096.0);
-    if !(cell.is_finite() && cell > 0.0) {
-        return;
+    let points: Vec<DVec2> = rings.iter().flatten().copied().collect();
+    let edges = points.len().max(1);
+    let perimeter: f64 = rings.iter().map(|r| ring_perimeter(r)).sum();
+    // Cells about as large as an edge: each edge looks at a few cells.
+    let cell = (perimeter / edges as f64).max(f64::MIN_POSITIVE);
+    let cell_of = |p: DVec2| ((p.x / cell).floor() as i64, (p.y / cell).floor() as i64);
+    let mut grid: HashMap<(i64, i64), Vec<usize>> = HashMap::new();
+    for (i, &p) in points.iter().enumerate() {
+        grid.entry(cell_of(p)).or_default().push(i);
     }
-    let index = |p: DVec2| (((p.x - min.x) / cell).max(0.0) as u64, ((p.y - min.y) / cell).max(0.0) as u64);
     let pad = DVec2::splat(tolerance);
-    // (cell, ring, edge), and the edges too long for the grid.
-    let mut entries: Vec<(u64, u32, u32)> = Vec::with_capacity(2 * vertices);
-    let mut long: Vec<(u32, u32)> = Vec::new();
-    for (r, ring) in rings.iter().enumerate() {
+    for ring in rings.iter_mut() {
         let n = ring.len();
-        for i in 0..n {
-            let (a, b) = (ring[i], ring[(i + 1) % n]);
-            let (lo, hi) = (index(a.min(b) - pad), index(a.max(b) + pad));
-            let cells = (hi.0 - lo.0 + 1) * (hi.1 - lo.1 + 1);
-            if cells > MAX_CELLS_PER_EDGE as u64 || entries.len() + cells as usize > MAX_CELLS_PER_VERTEX * vertices {
-                long.push((r as u32, i as u32));
-                continue;
-            }
-            for x in lo.0..=hi.0 {
-                for y in lo.1..=hi.1 {
-                    entries.push((x << 32 | y, r as u32, i as u32));
-                }
-            }
-        }
-    }
-    entries.par_sort_unstable();
-    let in_cell = |key: u64| {
-        let start = entries.partition_point(|e| e.0 < key);
-        entries[start..].iter().take_while(move |e| e.0 == key).map(|&(_, r, i)| (r, i))
-    };
-    // (ring, edge, position along the edge, point) of every contact, the
-    // vertices looked at on every core.
-    let rings_read: &[Vec<DVec2>] = rings;
-    let contacts_of = |(r, k): (usize, usize)| {
-        let p = rings_read[r][k];
-        let (x, y) = index(p);
-        let mut hits: Vec<(u32, u32, f64, DVec2)> = Vec::new();
-        for (s, j) in in_cell(x << 32 | y).chain(long.iter().copied()) {
-            let other = &rings_read[s as usize];
-            let m = other.len();
-            let j = j as usize;
-            // An edge of the vertex's own corner meets it by construction.
-            if s as usize == r && (j == k || (j + 1) % m == k) {
-                continue;
-            }
-            let (a, b) = (other[j], other[(j + 1) % m]);
-            if p == a || p == b {
+        let mut out = Vec::with_capacity(n);
+        for k in 0..n {
+            let (a, b) = (ring[k], ring[(k + 1) % n]);
+            out.push(a);
+            let (lo, hi) = (cell_of(a.min(b) - pad), cell_of(a.max(b) + pad));
+            if (hi.0 - lo.0 + 1) * (hi.1 - lo.1 + 1) > MAX_CELLS_PER_EDGE {
                 continue;
             }
             let d = b - a;
-            let t = (p - a).dot(d) / d.length_squared();
-            if t > 0.0 && t < 1.0 && (a + d * t).distance(p) <= tolerance {
-                hits.push((s, j as u32, t, p));
+            // Off the line by at most `tolerance`: `|d × (p − a)| ≤ tolerance·|d|`,
+            // which at 0 is the exact test.
+            let off_line = tolerance * d.length();
+            let mut inside: Vec<(f64, DVec2)> = Vec::new();
+            for x in lo.0..=hi.0 {
+                for y in lo.1..=hi.1 {
+                    for &i in grid.get(&(x, y)).into_iter().flatten() {
+                        let p = points[i];
+                        let t = (p - a).dot(d);
+                        if d.perp_dot(p - a).abs() <= off_line && t > 0.0 && t < d.length_squared() {
+                            inside.push((t, p));
+                        }
+                    }
+                }
             }
-        }
-        hits
-    };
-    let mut found: Vec<(u32, u32, f64, DVec2)> = rings_read
-        .par_iter()
-        .enumerate()
-        .flat_map_iter(|(r, ring)| (0..ring.len()).map(move |k| (r, k)))
-        .flat_map_iter(contacts_of)
-        .collect();
-    if found.is_empty() {
-        return;
-    }
-    found.sort_by(|x, y| (x.0, x.1).cmp(&(y.0, y.1)).then(x.2.total_cmp(&y.2)));
-    found.dedup_by(|x, y| x.0 == y.0 && x.1 == y.1 && x.3 == y.3);
-    for group in found.chunk_by(|x, y| x.0 == y.0) {
-        let ring = &mut rings[group[0].0 as usize];
-        let mut out = Vec::with_capacity(ring.len() + group.len());
-        let mut next = group.iter().peekable();
-        for (i, &v) in ring.iter().enumerate() {
-            out.push(v);
-            while let Some(&&(_, _, _, p)) = next.peek().filter(|c| c.1 as usize == i) {
-                out.push(p);
-                next.next();
-            }
+            inside.sort_by(|x, y| x.0.total_cmp(&y.0));
+            inside.dedup_by(|x, y| x.1 == y.1);
+            out.extend(inside.into_iter().map(|(_, p)| p));
         }
         *ring = out;
     }

@@ -169,7 +169,7 @@ fn extrude_exactly(
         .filter(|r| r.len() >= 3)
         .collect();
     if split_junctions {
-        rounded = super::split_t_junctions(&rounded);
+        crate::geom::insert_edge_contacts(&mut rounded, 0.0);
     }
     // Where rings touch at a point (parts meeting at a corner, two holes
     // tip to tip), a shared vertex would put four walls on one edge, so all

@@ -13,7 +13,6 @@ mod rings;
 mod sanity;
 mod short_edges;
 mod slabs;
-mod t_junctions;
 mod thicken;
 mod triangle_mesh;
 
@@ -27,6 +26,5 @@ pub use refine::split_edges;
 pub use rings::vertex_rings;
 pub use sanity::MeshDefect;
 pub use short_edges::{MIN_EDGE_MM, collapse_short_edges};
-pub use t_junctions::split_t_junctions;
 pub use thicken::thicken;
 pub use triangle_mesh::Mesh;

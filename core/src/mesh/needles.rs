@@ -8,14 +8,12 @@
 
 use glam::DVec2;
 
+use crate::geom::closest_on_segment;
+
 /// Whether `p → v → q` runs out to `v` and back: the two edges point in
 /// opposite directions and one end lies within `width` of the other edge.
 fn is_needle(p: DVec2, v: DVec2, q: DVec2, width: f64) -> bool {
-    let along = |x: DVec2, a: DVec2, b: DVec2| {
-        let d = b - a;
-        let t = if d.length_squared() > 0.0 { ((x - a).dot(d) / d.length_squared()).clamp(0.0, 1.0) } else { 0.0 };
-        (a + d * t).distance(x)
-    };
+    let along = |x: DVec2, a: DVec2, b: DVec2| closest_on_segment(x, a, b).1.distance(x);
     (v - p).dot(q - v) < 0.0 && (along(p, v, q) <= width || along(q, p, v) <= width)
 }
 

@@ -71,13 +71,13 @@ impl PairCost {
         let ga = a.right.iter().flat_map(|p| [p.top_tangent, p.bottom_tangent]);
         let gb = b.left.iter().flat_map(|p| [p.top_tangent, p.bottom_tangent]);
         let d_tangent = ga.zip(gb).map(|(x, y)| (1.0 - x.dot(y)).abs()).sum::<f64>();
+        let free = LEAN_FREE_DEG.to_radians().sin().powi(2);
         let lean = |gap: f64, width: f64| {
             let slope = LEAN_PER_GAP * gap / width.max(f64::MIN_POSITIVE);
             // sin² of the lean angle: bounded, so that however thin a sliver
             // is, its seam costs no more than a few poor tangents; leans the
             // eye does not notice cost nothing.
             let sin2 = if slope.is_finite() { slope * slope / (1.0 + slope * slope) } else { 1.0 };
-            let free = LEAN_FREE_DEG.to_radians().sin().powi(2);
             ((sin2 - free) / (1.0 - free)).max(0.0)
         };
         let d_lean = ya
