@@ -1,6 +1,7 @@
 //! Loading exemplars from SVG: what is filled, and clear errors on bad input.
 
 use proptest::prelude::*;
+use tracery_core::DVec2;
 use tracery_core::geom::count_topology;
 use tracery_core::vector_brush::{BUILTIN_NAMES, Exemplar, ExemplarError, LoadOptions, builtin, builtin_svg};
 
@@ -60,14 +61,55 @@ fn strokes_become_outlines() {
 fn curves_are_flattened_within_tolerance() {
     let ex = load(&wrap(r#"<circle cx="50" cy="50" r="40"/>"#)).unwrap();
     let exact = std::f64::consts::PI * 1600.0;
-    // The default tolerance is a thousandth of the diagonal: the polygon
-    // is inscribed, so its area is a little smaller, never larger.
+    // The default tolerance is a thousandth of the drawing's height: the
+    // polygon is inscribed, so its area is a little smaller, never larger.
     let error = (exact - ex.region.area()) / exact;
     assert!((0.0..0.005).contains(&error), "relative area error {error}");
     let mut options = LoadOptions::default();
     options.relative_tolerance = 1e-5;
     let fine = Exemplar::from_svg_str("fine", &wrap(r#"<circle cx="50" cy="50" r="40"/>"#), &options).unwrap();
     assert!(fine.region.vertex_count() > ex.region.vertex_count());
+}
+
+/// How far the chord from `a` to `b` strays inside a circle of `radius`
+/// round `centre`: its midpoint's depth (the ends lie on the circle).
+fn chord_error(a: DVec2, b: DVec2, centre: DVec2, radius: f64) -> f64 {
+    radius - (0.5 * (a + b)).distance(centre)
+}
+
+#[test]
+fn a_small_hole_in_a_wide_drawing_is_flattened_within_a_hundredth_of_a_millimetre() {
+    // A 200 x 10 strip with a 3 mm hole: fitted to a 10 mm band, one unit
+    // is a millimetre. A tolerance taken from the diagonal (0.2 mm) would
+    // make the hole an octagon.
+    let svg = r#"<svg xmlns="http://www.w3.org/2000/svg" viewBox="0 0 200 10">
+        <path fill-rule="evenodd" d="M0,0 H200 V10 H0 Z M101.5,5 A1.5,1.5 0 1 0 98.5,5 A1.5,1.5 0 1 0 101.5,5 Z"/></svg>"#;
+    let ex = load(svg).unwrap();
+    let hole = &ex.region.polygons[0].holes[0];
+    // The exemplar is moved to start at u = 0, centred on v = 0.
+    let centre = DVec2::new(100.0, 0.0);
+    // usvg draws an arc as cubic Béziers, true to a few micrometres.
+    let off = hole.iter().map(|p| (p.distance(centre) - 1.5).abs()).fold(0.0, f64::max);
+    assert!(off < 0.002, "a vertex lies {off} mm off the circle");
+    let worst =
+        (0..hole.len()).map(|k| chord_error(hole[k], hole[(k + 1) % hole.len()], centre, 1.5)).fold(0.0, f64::max);
+    assert!(worst <= 0.01 + off, "a chord strays {worst} mm from the hole");
+    assert!(hole.len() <= 40, "{} vertices for a 3 mm hole", hole.len());
+}
+
+#[test]
+fn slivers_of_no_width_are_dropped_and_slender_features_kept() {
+    // A strip with a needle out of its side 1e-4 wide at its base, and a
+    // sliver part of its own: on a 10 mm band, a tenth of a micrometre.
+    let needle = r#"<path d="M0,0 H40 V4 L60,4.00005 L40,4.0001 V10 H0 Z"/>"#;
+    let sliver = r#"<path d="M50,8 L70,8.00005 L50,8.0001 Z"/>"#;
+    let ex = load(&wrap(&format!("{needle}{sliver}"))).unwrap();
+    assert_eq!(ex.region.component_count(), 1);
+    assert!((ex.width() - 40.0).abs() < 1e-9, "width {}", ex.width());
+    // A thin wedge 0.02 wide at its base (a fiftieth of a millimetre on a
+    // 10 mm band) is the drawing's own.
+    let wedge = load(&wrap(r#"<path d="M0,0 H40 V4 L60,4.01 L40,4.02 V10 H0 Z"/>"#)).unwrap();
+    assert!((wedge.width() - 60.0).abs() < 1e-9, "width {}", wedge.width());
 }
 
 #[test]

@@ -13,7 +13,7 @@ use crate::geom::{Rect, Region};
 const TOUCH_GAP_MM: f64 = 1e-3;
 
 /// Spikes narrower than this at their base are dropped before meshing
-/// ([`super::without_needles`]): far below any feature a printer or a laser
+/// ([`crate::geom::without_needles`]): far below any feature a printer or a laser
 /// makes, and above the rounding of `f32` for coordinates up to about 800 mm.
 const NEEDLE_MM: f64 = 1e-4;
 
@@ -163,7 +163,7 @@ fn extrude_exactly(
             while r.len() > 1 && r.first() == r.last() {
                 r.pop();
             }
-            super::without_needles(&mut r, NEEDLE_MM);
+            crate::geom::without_needles(&mut r, NEEDLE_MM);
             r
         })
         .filter(|r| r.len() >= 3)
@@ -205,7 +205,7 @@ fn extrude_exactly(
     }
     if let Some(edge_mm) = fine {
         let all: Vec<usize> = (0..rings.len()).collect();
-        return Ok(refined(constrained(&points, &ring_edges(&rings, &all))?.0, edge_mm));
+        return Ok(refined(constrained(&points, &ring_edges(&rings, &all))?.cdt, edge_mm));
     }
     // Rings whose bounding boxes are apart cannot cross or touch, so each
     // group of overlapping ones is triangulated on its own, groups on every
@@ -304,14 +304,19 @@ fn ring_edges(rings: &[Vec<usize>], group: &[usize]) -> Vec<[usize; 2]> {
         .collect()
 }
 
+/// A constrained Delaunay triangulation of some of the points, with for
+/// each of its vertices its index in the points, and its constraint edges
+/// as indices of its vertices.
+struct Constrained {
+    cdt: ConstrainedDelaunayTriangulation<Point2<f64>>,
+    global: Vec<usize>,
+    edges: Vec<[usize; 2]>,
+}
+
 /// The constrained Delaunay triangulation whose constraints are `edges`
-/// (indices into `points`), with, for each of its vertices, its index in
-/// `points`. An error where an outline crosses itself or another, or a
-/// vertex lies on another edge.
-fn constrained(
-    points: &[Point2<f64>],
-    global_edges: &[[usize; 2]],
-) -> Result<(ConstrainedDelaunayTriangulation<Point2<f64>>, Vec<usize>), MeshError> {
+/// (indices into `points`). An error where an outline crosses itself or
+/// another, or a vertex lies on another edge.
+fn constrained(points: &[Point2<f64>], global_edges: &[[usize; 2]]) -> Result<Constrained, MeshError> {
     let mut local: FxHashMap<usize, usize> = FxHashMap::default();
     let mut global: Vec<usize> = Vec::new();
     let mut local_of = |g: usize| {
@@ -336,15 +341,32 @@ fn constrained(
             return Err(MeshError::Tessellation("a vertex lies on another ring's edge".into()));
         }
     }
-    Ok((cdt, global))
+    Ok(Constrained { cdt, global, edges })
 }
 
 /// The triangles inside the closed outlines made by `edges` (indices into
-/// `points`), counter-clockwise, as indices into `points`.
+/// `points`, each with the inside on its left), counter-clockwise, as
+/// indices into `points`.
 fn inside_faces(points: &[Point2<f64>], edges: &[[usize; 2]]) -> Result<Vec<[u32; 3]>, MeshError> {
-    let (cdt, global) = constrained(points, edges)?;
+    let Constrained { cdt, global, edges: local_edges } = constrained(points, edges)?;
     // Crossing a ring edge toggles inside and outside.
     let inside = crate::geom::faces_inside(&cdt);
+    // Rings keep their material on their left. An outline that doubles
+    // back within `f32` rounding of itself can come out of the rounding
+    // with material on the wrong side of it and no edge crossing: the
+    // triangulation holds, but the flood fills the wrong side, and the
+    // walls would not meet the faces (an open solid). Such an outline is
+    // repaired as one that crosses itself would be, or refused.
+    let filled = |face: spade::handles::FaceHandle<'_, spade::handles::PossiblyOuterTag, _, _, _, _>| {
+        face.as_inner().is_some_and(|f| inside[f.fix().index()] == Some(true))
+    };
+    for &[a, b] in &local_edges {
+        let (va, vb) = (FixedVertexHandle::from_index(a), FixedVertexHandle::from_index(b));
+        let edge = cdt.get_edge_from_neighbors(va, vb).expect("every ring edge is in the triangulation");
+        if !filled(edge.face()) || filled(edge.rev().face()) {
+            return Err(MeshError::Tessellation("an outline has material on its wrong side".into()));
+        }
+    }
     Ok(cdt
         .inner_faces()
         .filter(|face| inside[face.fix().index()] == Some(true))

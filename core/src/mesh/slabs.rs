@@ -74,9 +74,11 @@ pub(super) fn slab_edges(
         if along.len() % 2 == 1 || along.windows(2).any(|w| w[0].0 == w[1].0) {
             return None;
         }
+        // Each slab gets the stretch with its own side on the left, as its
+        // rings' edges have their material (`inside_faces` checks both).
         for pair in along.chunks_exact(2) {
             edges[line].push([pair[0].1, pair[1].1]);
-            edges[line + 1].push([pair[0].1, pair[1].1]);
+            edges[line + 1].push([pair[1].1, pair[0].1]);
         }
     }
     points.extend(added);

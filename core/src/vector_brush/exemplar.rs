@@ -16,14 +16,17 @@ use usvg::tiny_skia_path;
 
 use super::ExemplarError;
 use crate::geom::flatten::flatten;
-use crate::geom::{FillRule, Rect, Region, resolve_contours, union};
+use crate::geom::{FillRule, Rect, Region, resolve_contours, union, without_needles};
 
 /// Options for [`Exemplar::from_svg_str`].
 #[derive(Clone, Debug, PartialEq)]
 #[non_exhaustive]
 pub struct LoadOptions {
     /// Largest distance between a curve and its flattened polyline, as a
-    /// fraction of the drawing's bounding-box diagonal.
+    /// fraction of the drawing's height: the height is fitted to the band,
+    /// so the default, 1e-3, is 0.01 mm on a 10 mm band, whatever the
+    /// drawing's width. (At least 2e-5 of the diagonal, so that a drawing
+    /// far wider than high stays within `max_vertices`.)
     pub relative_tolerance: f64,
     /// Smallest accepted extent of the drawing, in user units.
     pub min_size: f64,
@@ -31,11 +34,22 @@ pub struct LoadOptions {
     pub max_size: f64,
     /// Most vertices accepted after flattening.
     pub max_vertices: usize,
+    /// Spikes of an outline narrower than this at their base, as a
+    /// fraction of the drawing's height, are dropped, and so are parts and
+    /// holes that are nothing but such spikes: 1e-4, a tenth of the
+    /// flattening's error, is a micrometre on a 10 mm band.
+    pub relative_needle_width: f64,
 }
 
 impl Default for LoadOptions {
     fn default() -> Self {
-        LoadOptions { relative_tolerance: 1e-3, min_size: 1e-3, max_size: 1e6, max_vertices: 200_000 }
+        LoadOptions {
+            relative_tolerance: 1e-3,
+            min_size: 1e-3,
+            max_size: 1e6,
+            max_vertices: 200_000,
+            relative_needle_width: 1e-4,
+        }
     }
 }
 
@@ -116,7 +130,12 @@ impl Exemplar {
                 max: options.max_size,
             });
         }
-        let tolerance = (diagonal * options.relative_tolerance).max(1e-9);
+        // The height is what the band's height is fitted to, so a tolerance
+        // relative to it is one in printed millimetres: 1e-3 of a 10 mm band
+        // is 0.01 mm, whatever the drawing's width. A floor relative to the
+        // diagonal keeps a drawing far wider than high within the vertex cap.
+        let height = f64::from(bbox.height());
+        let tolerance = (height * options.relative_tolerance).max(diagonal * 2e-5).max(1e-9);
         let mut parts = Vec::new();
         let mut painted = false;
         let mut vertices = 0;
@@ -125,7 +144,22 @@ impl Exemplar {
             return Err(ExemplarError::NothingFilled);
         }
         let refs: Vec<&Region> = parts.iter().collect();
-        let region = union(&refs);
+        let mut region = union(&refs);
+        // Where strokes were joined, an outline can run out and back along
+        // nearly one line, and a stroke can leave a sliver of no area as a
+        // part of its own. A spike far narrower at its base than the
+        // flattening's error is not a feature of the drawing, and once bent
+        // along a curve it can fold across itself by less than a file can
+        // store. Wider tips and cracks, however slender, are the drawing's.
+        let needle = height * options.relative_needle_width;
+        // A ring that was nothing but such spikes goes with them.
+        let kept = |ring: &Vec<DVec2>| ring.len() >= 3 && crate::geom::signed_area(ring).abs() > needle * needle;
+        for polygon in &mut region.polygons {
+            without_needles(&mut polygon.outer, needle);
+            polygon.holes.iter_mut().for_each(|hole| without_needles(hole, needle));
+            polygon.holes.retain(kept);
+        }
+        region.polygons.retain(|p| kept(&p.outer));
         if region.is_empty() {
             return Err(ExemplarError::ZeroArea);
         }

@@ -302,14 +302,24 @@ pub(crate) fn laid_out(
             // resolution apart here, once.
             let stitched = std::mem::take(&mut band.region);
             band.region = separate_touching(&stitched, RESOLUTION_MM / scale);
+            let planned = (solution.components as usize, solution.holes as usize);
             let mapped = |band: &Region, tolerance_mm: f64| {
                 let mut planar = map_along_within(band, scale, curve, tolerance_mm);
-                planar.region = without_slivers(&planar.region, RESOLUTION_MM);
+                let cleaned = without_slivers(&planar.region, RESOLUTION_MM);
                 // Straight from the union in `map_along`, less slivers: clean.
-                let topology = planar_topology_of_clean(&planar.region, curve);
+                let topology = planar_topology_of_clean(&cleaned, curve);
+                if (topology.components, topology.holes) != planned {
+                    // A speck the plan counts as a part (the tip of a stroke
+                    // a cut grazed, left alone by a break) is the plan's and
+                    // stays; so is a hairline hole it counts.
+                    let raw = planar_topology_of_clean(&planar.region, curve);
+                    if (raw.components, raw.holes) == planned {
+                        return (planar, raw);
+                    }
+                }
+                planar.region = cleaned;
                 (planar, topology)
             };
-            let planned = (solution.components as usize, solution.holes as usize);
             let (mut planar, mut topology) = mapped(&band.region, MAPPING_TOLERANCE_MM);
             if (topology.components, topology.holes) != planned {
                 // Two rare ways the mapping can differ from the plan, both

@@ -2,13 +2,14 @@
 //!
 //! An outline can run out to a tip and back along nearly the same line, a
 //! spike a ten-millionth of a millimetre wide (stitching and mapping leave
-//! them where a cut grazes a stroke's end). Rounded to `f32`, the way back
-//! touches or crosses the way out, and the mesher cuts the tip off as a
-//! body of its own. A spike that thin has no material: it is dropped.
+//! them where a cut grazes a stroke's end; drawings have them where strokes
+//! were joined). Rounded to `f32`, the way back touches or crosses the way
+//! out, and the mesher cuts the tip off as a body of its own. A spike that
+//! thin has no material: it is dropped.
 
 use glam::DVec2;
 
-use crate::geom::closest_on_segment;
+use super::closest_on_segment;
 
 /// Whether `p → v → q` runs out to `v` and back: the two edges point in
 /// opposite directions and one end lies within `width` of the other edge.
@@ -22,7 +23,7 @@ fn is_needle(p: DVec2, v: DVec2, q: DVec2, width: f64) -> bool {
 ///
 /// ```
 /// use tracery_core::DVec2;
-/// use tracery_core::mesh::without_needles;
+/// use tracery_core::geom::without_needles;
 /// // A square with a spike out of its right side, 1e-7 wide.
 /// let mut ring = vec![
 ///     DVec2::new(0.0, 0.0), DVec2::new(1.0, 0.0), DVec2::new(1.0, 0.5),
