@@ -18,6 +18,11 @@ use super::ExemplarError;
 use crate::geom::flatten::flatten;
 use crate::geom::{FillRule, Rect, Region, resolve_contours, union, without_needles};
 
+/// The flattening tolerance is at least this fraction of the drawing's
+/// diagonal: on a drawing 50 times wider than high, a tolerance of 1e-3 of
+/// its height would otherwise need 50 times the vertices.
+const MIN_TOLERANCE_OF_DIAGONAL: f64 = 2e-5;
+
 /// Options for [`Exemplar::from_svg_str`].
 #[derive(Clone, Debug, PartialEq)]
 #[non_exhaustive]
@@ -135,7 +140,7 @@ impl Exemplar {
         // is 0.01 mm, whatever the drawing's width. A floor relative to the
         // diagonal keeps a drawing far wider than high within the vertex cap.
         let height = f64::from(bbox.height());
-        let tolerance = (height * options.relative_tolerance).max(diagonal * 2e-5).max(1e-9);
+        let tolerance = (height * options.relative_tolerance).max(diagonal * MIN_TOLERANCE_OF_DIAGONAL).max(1e-9);
         let mut parts = Vec::new();
         let mut painted = false;
         let mut vertices = 0;
