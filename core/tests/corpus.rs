@@ -23,6 +23,17 @@ fn corpus() -> Vec<PathBuf> {
     files
 }
 
+/// One ornament of the corpus, or `None`, with a line saying so, where the
+/// corpus is not next to this checkout.
+fn corpus_file(name: &str) -> Option<PathBuf> {
+    let files = corpus();
+    if files.is_empty() {
+        eprintln!("the corpus is not next to this checkout; nothing to run");
+        return None;
+    }
+    Some(files.into_iter().find(|f| f.file_name().is_some_and(|n| n == name)).expect("in the corpus"))
+}
+
 #[test]
 fn corpus_subset_meets_its_plan_in_the_band() {
     let files = corpus();
@@ -104,19 +115,14 @@ fn corpus_subset_meets_its_plan_in_the_band() {
 /// Counted on the final geometry.
 #[test]
 fn runs_once_mapped_unlike_their_plan_come_out_as_planned() {
-    let files = corpus();
-    if files.is_empty() {
-        eprintln!("the corpus is not next to this checkout; nothing to run");
-        return;
-    }
     let runs = [
         ("vectorian139.svg", Curve::wave(200.0).unwrap(), Target::Any, Target::Any, Settings::default().variety),
         ("vectorian169.svg", Curve::star(5, 45.0).unwrap(), Target::Exactly(1), Target::Exactly(0), 0.6),
         ("vectorian142.svg", Curve::line(200.0).unwrap(), Target::Any, Target::Any, Settings::default().variety),
     ];
     for (name, curve, components, holes, variety) in runs {
-        let file = files.iter().find(|f| f.file_name().is_some_and(|n| n == name)).expect("in the corpus");
-        let exemplar = Exemplar::from_svg_file(file, &LoadOptions::default()).unwrap();
+        let Some(file) = corpus_file(name) else { return };
+        let exemplar = Exemplar::from_svg_file(&file, &LoadOptions::default()).unwrap();
         let mut settings = Settings::default();
         (settings.components, settings.holes, settings.variety) = (components, holes, variety);
         settings.closed_pattern = curve.is_closed();
@@ -136,15 +142,10 @@ fn runs_once_mapped_unlike_their_plan_come_out_as_planned() {
 /// closed solid or an error, never an open one. Checked on the mesh.
 #[test]
 fn an_outline_doubling_back_within_rounding_never_meshes_open() {
-    let files = corpus();
-    if files.is_empty() {
-        eprintln!("the corpus is not next to this checkout; nothing to run");
-        return;
-    }
-    let file = files.iter().find(|f| f.file_name().is_some_and(|n| n == "vectorian139.svg")).expect("in the corpus");
+    let Some(file) = corpus_file("vectorian139.svg") else { return };
     let mut options = LoadOptions::default();
     options.relative_needle_width = 0.0;
-    let exemplar = Exemplar::from_svg_file(file, &options).unwrap();
+    let exemplar = Exemplar::from_svg_file(&file, &options).unwrap();
     let mut settings = Settings::default();
     (settings.components, settings.holes) = (Target::Any, Target::Any);
     let s = synthesize(&exemplar, &Curve::line(200.0).unwrap(), &settings, &Control::default()).unwrap();
@@ -153,7 +154,7 @@ fn an_outline_doubling_back_within_rounding_never_meshes_open() {
         assert_eq!(mesh.shell_count() as u32, s.solution.components);
     }
     // With the spikes dropped, as loading does by default, it meshes.
-    let exemplar = Exemplar::from_svg_file(file, &LoadOptions::default()).unwrap();
+    let exemplar = Exemplar::from_svg_file(&file, &LoadOptions::default()).unwrap();
     let s = synthesize(&exemplar, &Curve::line(200.0).unwrap(), &settings, &Control::default()).unwrap();
     let mesh = extrude(&s.planar.region, settings.thickness_mm).unwrap();
     mesh.sanity_check().unwrap();

@@ -3,11 +3,11 @@
 
 use tracery_core::control::Control;
 use tracery_core::curve::{Curve, map_along, planar_topology};
-use tracery_core::geom::{count_topology, separate_touching, without_slivers};
+use tracery_core::geom::{count_topology, separate_touching};
 use tracery_core::mesh::{Mesh, extrude};
 use tracery_core::vector_brush::{
     BUILTIN_NAMES, CurveKind, Exemplar, PieceSet, RESOLUTION_MM, Settings, SliceOptions, SlicingMode, SolveError,
-    SolveOptions, Target, builtin, solve, spread_offsets, stitch,
+    SolveOptions, Target, builtin, settled_region, solve, spread_offsets, stitch,
 };
 
 #[test]
@@ -16,11 +16,8 @@ fn every_stage_keeps_its_invariants() {
     for name in BUILTIN_NAMES {
         let drawn = builtin(name).unwrap();
         drawn.region.sanity_check().unwrap_or_else(|e| panic!("{name}: exemplar: {e}"));
-        // As the pipeline analyses it at a 10 mm band: hairline slivers
-        // filled and parts that only touch at a point moved apart, so that
-        // the plan and the final geometry agree on them.
-        let resolution = RESOLUTION_MM * drawn.height() / 10.0;
-        let settled = separate_touching(&without_slivers(&drawn.region, resolution), resolution);
+        // As the pipeline analyses it at a 10 mm band.
+        let settled = settled_region(&drawn.region, RESOLUTION_MM * drawn.height() / 10.0);
         let exemplar = Exemplar::from_region(*name, settled).unwrap();
         exemplar.region.sanity_check().unwrap_or_else(|e| panic!("{name}: settled exemplar: {e}"));
         for mode in [SlicingMode::Topology, SlicingMode::Uniform { cuts: 7 }] {

@@ -1,8 +1,9 @@
 //! Vertices that lie on another ring's edge, made into shared vertices.
 //!
 //! Meshing needs it where rounding to `f32` put a vertex exactly on another
-//! ring's edge (a T-junction). The pattern stages need it where two parts touch, one ring's vertex can sit on the middle of the
-//! other's edge instead of on one of its vertices: stitching thins the
+//! ring's edge (a T-junction). The pattern stages need it where two parts
+//! touch: one ring's vertex can sit on the middle of the other's edge
+//! instead of on one of its vertices, because stitching thins the
 //! points of a deformed outline, and may thin away the vertex that the other
 //! part's tip touched. [`super::separate_touching_rings`] only sees points
 //! that several rings share, so such a contact stayed, and a union merged

@@ -13,8 +13,9 @@ use crate::geom::{Rect, Region};
 const TOUCH_GAP_MM: f64 = 1e-3;
 
 /// Spikes narrower than this at their base are dropped before meshing
-/// ([`crate::geom::without_needles`]): far below any feature a printer or a laser
-/// makes, and above the rounding of `f32` for coordinates up to about 800 mm.
+/// ([`crate::geom::without_needles`]): far below any feature a printer or a
+/// laser makes, and above the rounding of `f32` for coordinates up to about
+/// 800 mm.
 const NEEDLE_MM: f64 = 1e-4;
 
 /// Why a mesh could not be made.

@@ -240,21 +240,21 @@ pub(crate) fn analyse(
     slicing.min_portal = settings.min_portal_mm / scale;
     slicing.event_grouping = settings.event_grouping;
     let set = timings.time("analysis", || {
-        // Hairline slivers where two strokes of the drawing nearly coincide
-        // are filled first, as they are in the result, so that the plan and
-        // the final geometry agree on them.
-        // Parts that only touch at a point are moved apart, as they are in
-        // the result, so that the plan counts them apart too.
         let resolution = RESOLUTION_MM / scale;
         let drawn = drawn.as_ref().unwrap_or(&exemplar.region);
-        let settled = Exemplar::from_region(
-            exemplar.name.clone(),
-            separate_touching(&without_slivers(drawn, resolution), resolution),
-        )
-        .unwrap_or_else(|_| exemplar.clone());
+        let settled = Exemplar::from_region(exemplar.name.clone(), settled_region(drawn, resolution))
+            .unwrap_or_else(|_| exemplar.clone());
         PieceSet::new(&settled, &slicing)
     })?;
     Ok((set, timings))
+}
+
+/// A drawing as the pipeline analyses it, `resolution` being
+/// [`RESOLUTION_MM`] in the drawing's units: hairline slivers filled, specks
+/// dropped, and parts that only touch at a point moved apart, as they are in
+/// the result, so that the plan and the final geometry agree on them.
+pub fn settled_region(drawn: &Region, resolution: f64) -> Region {
+    separate_touching(&without_slivers(drawn, resolution), resolution)
 }
 
 /// Patterns from an analysed exemplar along `curve`: the first `count`
