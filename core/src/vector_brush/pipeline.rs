@@ -288,20 +288,24 @@ pub(crate) fn laid_out(
     let build = |solution: Solution, mut timings: Timings| -> Synthesis {
         let (band, planar, topology) = timings.time("geometry", || {
             let offsets = spread_offsets(set, &solution.pieces, &solution.offsets, kind);
-            let mut band =
-                stitch(set, &solution.pieces, &offsets, curve.length() / scale, kind, MAPPING_TOLERANCE_MM / scale);
-            // The solver kept every piece within the band and stitching moves
-            // endpoints by half their mismatch; what still pokes out (a loop's
-            // closing error spread over its seams) is pressed back in, so the
-            // pattern never strays from the curve. Never below the exemplar's
-            // own half-height: a person who scaled it past the band asked for that.
-            let limit = (0.5 * options.band_height).max(0.5 * exemplar.height()) * (1.0 + BAND_MARGIN);
-            band.fit_within(limit);
-            // Parts that only touch at a point are apart in the plan; mapped
-            // onto a curve, rounding could merge them, so they are moved a
-            // resolution apart here, once.
-            let stitched = std::mem::take(&mut band.region);
-            band.region = separate_touching(&stitched, RESOLUTION_MM / scale);
+            // The pieces stitched with their outlines within `tolerance` of
+            // the deformed curves, and parts touching at a point moved apart
+            // (`apart`); the stitched region comes back too.
+            let stitched_within = |tolerance: f64, apart: fn(&Region, f64) -> Region| {
+                let mut band = stitch(set, &solution.pieces, &offsets, curve.length() / scale, kind, tolerance);
+                // The solver kept every piece within the band and stitching moves
+                // endpoints by half their mismatch; what still pokes out (a loop's
+                // closing error spread over its seams) is pressed back in, so the
+                // pattern never strays from the curve. Never below the exemplar's
+                // own half-height: a person who scaled it past the band asked for that.
+                let limit = (0.5 * options.band_height).max(0.5 * exemplar.height()) * (1.0 + BAND_MARGIN);
+                band.fit_within(limit);
+                // Parts that only touch at a point are apart in the plan; mapped
+                // onto a curve, rounding could merge them, so they are moved a
+                // resolution apart here, once.
+                band.region = apart(&band.region, RESOLUTION_MM / scale);
+                band
+            };
             let planned = (solution.components as usize, solution.holes as usize);
             let mapped = |band: &Region, tolerance_mm: f64| {
                 let mut planar = map_along_within(band, scale, curve, tolerance_mm);
@@ -320,15 +324,19 @@ pub(crate) fn laid_out(
                 planar.region = cleaned;
                 (planar, topology)
             };
+            let mut band = stitched_within(MAPPING_TOLERANCE_MM / scale, separate_touching);
             let (mut planar, mut topology) = mapped(&band.region, MAPPING_TOLERANCE_MM);
             if (topology.components, topology.holes) != planned {
-                // Two rare ways the mapping can differ from the plan, both
+                // Three rare ways the geometry can differ from the plan, all
                 // mended at a cost only paid here: a part's tip touching the
                 // middle of another's edge (thinned outlines leave no shared
-                // point to separate), and a neck squeezed on the inside of a
-                // turn cut through by the chords of its two sides.
-                band.region = separate_contacts(&stitched, RESOLUTION_MM / scale);
-                (planar, topology) = mapped(&band.region, MAPPING_TOLERANCE_MM / FINER_MAPPING);
+                // point to separate); a neck squeezed on the inside of a turn
+                // cut through by the chords of its two sides; and a tip
+                // thinner than twice the tolerance, whose long side's chord
+                // crosses the other side when stitched and pinches it off.
+                let finer = MAPPING_TOLERANCE_MM / FINER_MAPPING;
+                band = stitched_within(finer / scale, separate_contacts);
+                (planar, topology) = mapped(&band.region, finer);
             }
             (band, planar, topology)
         });
