@@ -50,13 +50,21 @@ impl Default for Autocorrelation {
 #[derive(Clone, Debug)]
 pub struct Similarity {
     table: [u16; 256],
+    /// The first [`NEAR`] entries, where every farther one rounds to zero
+    /// (σ = 0.5 gives 256, 35, 5, 1, then zeros): adding a piece then
+    /// needs no table lookups, and runs on every lag at once.
+    near: Option<[u32; NEAR]>,
 }
+
+/// How many distances can be told apart without the table (see [`Similarity`]).
+const NEAR: usize = 4;
 
 impl Similarity {
     /// The table for a given `σ` (the paper uses 0.5).
     pub fn new(sigma: f64) -> Self {
-        let table = std::array::from_fn(|d| ((-(d as f64) / sigma).exp() * SCALE).round() as u16);
-        Similarity { table }
+        let table: [u16; 256] = std::array::from_fn(|d| ((-(d as f64) / sigma).exp() * SCALE).round() as u16);
+        let near = table[NEAR..].iter().all(|&t| t == 0).then(|| std::array::from_fn(|d| u32::from(table[d])));
+        Similarity { table, near }
     }
 }
 
@@ -66,11 +74,37 @@ impl Autocorrelation {
     pub fn push(&self, piece: usize, similarity: &Similarity) -> Autocorrelation {
         let p = piece.min(255) as u8;
         let mut next = *self;
-        for (sum, &h) in next.sums.iter_mut().zip(self.history.iter()).take(usize::from(self.filled)) {
-            *sum = sum.saturating_add(u32::from(similarity.table[usize::from(h.abs_diff(p))]));
+        match similarity.near {
+            // A full history and a short reach: the same few operations on
+            // every lag, which the compiler runs side by side. Most states
+            // of a long search are of this kind.
+            Some(near) if usize::from(self.filled) == LAGS => {
+                for (sum, &h) in next.sums.iter_mut().zip(self.history.iter()) {
+                    let d = h.abs_diff(p);
+                    let add = if d == 0 {
+                        near[0]
+                    } else if d == 1 {
+                        near[1]
+                    } else if d == 2 {
+                        near[2]
+                    } else if d == 3 {
+                        near[3]
+                    } else {
+                        0
+                    };
+                    *sum = sum.saturating_add(add);
+                }
+            }
+            _ => {
+                for (sum, &h) in next.sums.iter_mut().zip(self.history.iter()).take(usize::from(self.filled)) {
+                    *sum = sum.saturating_add(u32::from(similarity.table[usize::from(h.abs_diff(p))]));
+                }
+            }
         }
         next.max = next.sums.iter().copied().fold(0, u32::max);
-        next.history.copy_within(0..LAGS - 1, 1);
+        // Shifted by copying into place rather than moving within: a copy
+        // of a known size needs no call.
+        next.history[1..].copy_from_slice(&self.history[..LAGS - 1]);
         next.history[0] = p;
         next.filled = (self.filled + 1).min(LAGS as u8);
         next

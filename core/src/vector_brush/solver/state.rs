@@ -32,7 +32,12 @@ impl LengthGrid {
 
     /// The key of a true length, in steps.
     pub fn key(&self, length: f64) -> u32 {
-        (length / self.quantum).round() as u32
+        // `round`, half away from zero, for the non-negative lengths of a
+        // search: it is called for every state and follower, and `round`
+        // is a call where the CPU has no rounding instruction.
+        let steps = (length / self.quantum).max(0.0);
+        let whole = steps as u32;
+        if steps - f64::from(whole) >= 0.5 { whole.saturating_add(1) } else { whole }
     }
 
     /// A width in whole steps, rounded up: the most a piece can advance the key, less one.
