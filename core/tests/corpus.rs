@@ -9,7 +9,7 @@ use std::path::PathBuf;
 use tracery_core::control::Control;
 use tracery_core::curve::{Curve, planar_topology};
 use tracery_core::mesh::extrude;
-use tracery_core::quality::max_distance_from;
+use tracery_core::quality::{max_distance_from, near_period};
 use tracery_core::vector_brush::{Exemplar, LoadOptions, Settings, SolveError, SynthesisError, Target, synthesize};
 
 fn corpus() -> Vec<PathBuf> {
@@ -137,6 +137,31 @@ fn runs_once_mapped_unlike_their_plan_come_out_as_planned() {
         let mesh = extrude(&s.planar.region, settings.thickness_mm).unwrap();
         assert_eq!(mesh.shell_count() as u32, counted.0, "{name}: bodies");
     }
+}
+
+/// A corner ornament whose plain rule seams exactly with itself
+/// (`vectorian36`): at the default variety the cheapest pattern along a line
+/// was that rule 150 times over, its flourishes at one end only, because
+/// the variety term grows with the pattern just as the seams' cost does.
+/// Such a pattern is searched again with variety weighing more, and the
+/// result varies: its near-period, measured on shape classes apart from the
+/// solver, is at least a third of the pattern (it was 0.006 of it).
+#[test]
+fn a_rule_that_seams_with_itself_gives_way_to_variety() {
+    let Some(file) = corpus_file("vectorian36.svg") else { return };
+    let exemplar = Exemplar::from_svg_file(&file, &LoadOptions::default()).unwrap();
+    let settings = Settings::default();
+    let s = synthesize(&exemplar, &Curve::line(200.0).unwrap(), &settings, &Control::default()).unwrap();
+    let n = s.shape_classes.len();
+    let period = near_period(&s.shape_classes);
+    assert!(3 * period >= n, "near-period {period} of {n} pieces: {:?}", s.shape_classes);
+    let topology = planar_topology(&s.planar.region, &s.curve);
+    assert_eq!((topology.components as u32, topology.holes as u32), (s.solution.components, s.solution.holes));
+    // With variety off, the person asked for the cheapest seams: the rule stays.
+    let mut plain = settings.clone();
+    plain.variety = 0.0;
+    let s = synthesize(&exemplar, &Curve::line(200.0).unwrap(), &plain, &Control::default()).unwrap();
+    assert!(3 * near_period(&s.shape_classes) < s.shape_classes.len());
 }
 
 /// A pattern whose outline doubles back within `f32` rounding of itself
