@@ -289,8 +289,8 @@ pub(crate) fn laid_out(
         let (band, planar, topology) = timings.time("geometry", || {
             let offsets = spread_offsets(set, &solution.pieces, &solution.offsets, kind);
             // The pieces stitched with their outlines within `tolerance` of
-            // the deformed curves, and parts touching at a point moved apart
-            // (`apart`); the stitched region comes back too.
+            // the deformed curves, pressed into the band, and parts touching
+            // at a point moved apart by `apart`.
             let stitched_within = |tolerance: f64, apart: fn(&Region, f64) -> Region| {
                 let mut band = stitch(set, &solution.pieces, &offsets, curve.length() / scale, kind, tolerance);
                 // The solver kept every piece within the band and stitching moves
@@ -443,6 +443,8 @@ const BOOST_MAX_STATES: usize = 500_000;
 /// rule repeated can be cheaper than any varied sequence; at the person's
 /// weight the variety term, which grows with the pattern just as the
 /// seams' cost does, then never catches up (`docs/solver.md`, *Variety*).
+/// A pattern from the second search carries that search's cost, the
+/// variety term at the heavier weight.
 fn solve_varied(set: &PieceSet, options: &SolveOptions, control: &Control) -> Result<Solution, SolveError> {
     let first = super::solve(set, options, control)?;
     let repetitive = |s: &Solution| s.pieces.len() >= 6 && s.autocorrelation >= REPETITIVE * s.pieces.len() as f64;

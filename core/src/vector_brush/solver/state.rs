@@ -30,7 +30,20 @@ impl LengthGrid {
         LengthGrid { quantum }
     }
 
-    /// The key of a true length, in steps.
+    /// The key of a true length, in steps: rounded to the nearest, halves up.
+    ///
+    /// ```
+    /// use tracery_core::vector_brush::LengthGrid;
+    /// let grid = LengthGrid { quantum: 0.5 };
+    /// assert_eq!(grid.key(1.2), 2);
+    /// assert_eq!(grid.key(1.25), 3);
+    /// assert_eq!(grid.key(1.2499), 2);
+    /// assert_eq!(grid.key(0.0), 0);
+    /// for k in 0..2000 {
+    ///     let length = k as f64 * 0.0137;
+    ///     assert_eq!(grid.key(length), (length / 0.5).round() as u32);
+    /// }
+    /// ```
     pub fn key(&self, length: f64) -> u32 {
         // `round`, half away from zero, for the non-negative lengths of a
         // search: it is called for every state and follower, and `round`
