@@ -447,14 +447,16 @@ const BOOST_MAX_STATES: usize = 500_000;
 /// variety term at the heavier weight.
 fn solve_varied(set: &PieceSet, options: &SolveOptions, control: &Control) -> Result<Solution, SolveError> {
     let first = super::solve(set, options, control)?;
-    let repetitive = |s: &Solution| s.pieces.len() >= 6 && s.autocorrelation >= REPETITIVE * s.pieces.len() as f64;
-    if options.variety <= 0.0 || !repetitive(&first) || first.states > BOOST_MAX_STATES {
+    // The share of its pieces a pattern's autocorrelation counts as repeats.
+    let repeated = |s: &Solution| s.autocorrelation / s.pieces.len().max(1) as f64;
+    let repetitive = first.pieces.len() >= 6 && repeated(&first) >= REPETITIVE;
+    if options.variety <= 0.0 || !repetitive || first.states > BOOST_MAX_STATES {
         return Ok(first);
     }
     let mut boosted = options.clone();
     boosted.variety *= VARIETY_BOOST;
     match super::solve(set, &boosted, control) {
-        Ok(other) if other.autocorrelation <= VARIED * other.pieces.len() as f64 => Ok(other),
+        Ok(other) if repeated(&other) <= VARIED => Ok(other),
         Err(e) if e.is_cancelled() => Err(e),
         _ => Ok(first),
     }
