@@ -6,9 +6,7 @@
 mod quilt_support;
 
 use glam::DVec3;
-use quilt_support::{
-    bare_share_of_faces, boxes_meet, closed, cross, crossing_pairs, segment_hits, turned, woven_round,
-};
+use quilt_support::{bare_share_of_faces, closed, cross, crosses_itself, crossing_pairs, turned, woven_round};
 use tracery_core::control::Control;
 use tracery_core::mesh::Mesh;
 use tracery_core::mesh_quilt::{
@@ -175,30 +173,6 @@ fn the_minimum_cut_is_the_cheapest_labelling() {
             .unwrap();
         assert_eq!(cost(&kept), Some(best), "n {n}, weights {weights:?}");
     }
-}
-
-/// Whether an element's surface passes through itself: an edge through a
-/// triangle sharing no corner with it. Candidate pairs come from a sweep
-/// along x over the triangles' boxes, not from the library's grid.
-fn crosses_itself(e: &Element) -> bool {
-    let tris: Vec<[DVec3; 3]> = e.triangles.iter().map(|t| t.map(|v| e.vertices[v as usize])).collect();
-    let tri_box = |t: &[DVec3; 3]| (t[0].min(t[1]).min(t[2]), t[0].max(t[1]).max(t[2]));
-    let boxes: Vec<(DVec3, DVec3)> = tris.iter().map(tri_box).collect();
-    let mut order: Vec<usize> = (0..tris.len()).collect();
-    order.sort_by(|&i, &j| boxes[i].0.x.total_cmp(&boxes[j].0.x));
-    for (k, &i) in order.iter().enumerate() {
-        for &j in order[k + 1..].iter().take_while(|&&j| boxes[j].0.x <= boxes[i].1.x) {
-            let (t, u) = (e.triangles[i], e.triangles[j]);
-            if u.iter().any(|v| t.contains(v)) || !boxes_meet(boxes[i], boxes[j]) {
-                continue;
-            }
-            let (x, y) = (tris[i], tris[j]);
-            if (0..3).any(|k| segment_hits(y[k], y[(k + 1) % 3], x) || segment_hits(x[k], x[(k + 1) % 3], y)) {
-                return true;
-            }
-        }
-    }
-    false
 }
 
 /// A closed post turned about `z` with a V-groove round its middle, whose

@@ -23,6 +23,7 @@ use super::matching::{Input, MARGIN_CELLS, Neighbourhood, Placement, best_transl
 use super::merge::merge_patch;
 use super::patch::{FaceGraph, Patch, triangle_area_3d};
 use super::shell::{Shell, ShellStretch};
+use super::tear::{MAX_FOLD_DEG, MAX_STRETCH_SPREAD, largest_fold_deg, stretch_spread};
 use super::zones::{Zone, Zones, boxes_overlap};
 use super::{Element, GuidanceField, MAX_QUILT_TRIANGLES, Quilt, QuiltError, Settings, Swatch};
 use crate::control::Control;
@@ -56,6 +57,10 @@ pub struct ShellReport {
     /// Threads on the side reaching up past a flat top's rim, cut off
     /// just under it.
     pub cut_under_rim: usize,
+    /// Elements (not threads) not laid because the shell would have
+    /// folded them round a sharp crease or stretched them unevenly beside
+    /// one (see [`MAX_FOLD_DEG`], [`MAX_STRETCH_SPREAD`]).
+    pub torn: usize,
 }
 
 /// Each asked point's closest point of the base, by the point's bits.
@@ -170,11 +175,13 @@ pub fn quilt_surface(
         bare_seeds: 0,
         cut_at_rim: 0,
         cut_under_rim: 0,
+        torn: 0,
     };
     let lowest = surface.positions().iter().map(|p| p.z).fold(f64::INFINITY, f64::min);
     let mut processed: Vec<bool> = (0..triangles.len() as u32)
         .map(|f| surface.face_normal(f).z < -0.9 && graph.centres[f as usize].z < lowest + 0.5 * cell_mm)
         .collect();
+    let standing = processed.clone();
     let (sx, sy) = input.cells;
     let half = input.window_half();
     let radius_mm = (sx as f64).hypot(sy as f64) * cell_mm + 2.0 * reach;
@@ -250,16 +257,31 @@ pub fn quilt_surface(
         let cap = caps.of_face(seed);
         let mut placed: Vec<Element> = Vec::new();
         for e in &swatch.elements {
-            let on_patch: Option<Vec<DVec3>> = e
+            let on_patch: Option<Vec<(DVec3, u32)>> = e
                 .vertices
                 .iter()
                 .map(|&v| {
                     let q = placement.to_frame(v);
                     let (f, b) = patch.locate(q.truncate())?;
-                    Some(shell.point(surface, f, b, q.z - sink_mm))
+                    Some((shell.point(surface, f, b, q.z - sink_mm), f))
                 })
                 .collect();
-            if let Some(vertices) = on_patch {
+            if let Some(on_patch) = on_patch {
+                let vertices: Vec<DVec3> = on_patch.iter().map(|&(p, _)| p).collect();
+                // A thread may bend: it is cut and stitched to its
+                // neighbours, and one bent round a rim is cut there.
+                if !e.is_thread() {
+                    let normals: Vec<DVec3> = on_patch.iter().map(|&(_, f)| surface.face_normal(f)).collect();
+                    // What lies under the floor, or over the faces the model
+                    // stands on, is cut off at the floor (`foot`).
+                    let kept = |k: usize| vertices[k].z > lowest && !standing[on_patch[k].1 as usize];
+                    if largest_fold_deg(e, &normals, kept) > MAX_FOLD_DEG
+                        || stretch_spread(e, &vertices, kept) > MAX_STRETCH_SPREAD
+                    {
+                        report.torn += 1;
+                        continue;
+                    }
+                }
                 placed.push(Element { vertices, triangles: e.triangles.clone() });
             } else if let Some(cap) = cap {
                 // Past the patch's edge on a flat cap: laid whole in its

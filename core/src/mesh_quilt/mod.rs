@@ -28,6 +28,7 @@ mod shapes;
 mod shell;
 mod stitch;
 mod swatch;
+mod tear;
 mod zones;
 
 pub use builtin::{SWATCH_NAMES, builtin_swatch};
@@ -51,3 +52,4 @@ pub use shapes::{lathe, lathe_ring, torus, tube};
 pub use shell::{Shell, ShellStretch};
 pub use stitch::stitch;
 pub use swatch::{MAX_SWATCH_TRIANGLES, Swatch};
+pub use tear::{MAX_FOLD_DEG, MAX_STRETCH_SPREAD, largest_fold_deg, stretch_spread};

@@ -130,6 +130,7 @@ pub fn make_surface_product(
         facts.push("bare_seeds", Fact::Count(shell.bare_seeds));
         facts.push("cut_at_rim", Fact::Count(shell.cut_at_rim));
         facts.push("cut_under_rim", Fact::Count(shell.cut_under_rim));
+        facts.push("left_out_torn", Fact::Count(shell.torn));
     }
     Ok(product)
 }

@@ -79,6 +79,30 @@ pub fn crossing_pairs(elements: &[Element]) -> usize {
     n
 }
 
+/// Whether an element's surface passes through itself: an edge through a
+/// triangle sharing no corner with it. Candidate pairs come from a sweep
+/// along x over the triangles' boxes, not from the library's grid.
+pub fn crosses_itself(e: &Element) -> bool {
+    let tris: Vec<[DVec3; 3]> = e.triangles.iter().map(|t| t.map(|v| e.vertices[v as usize])).collect();
+    let tri_box = |t: &[DVec3; 3]| (t[0].min(t[1]).min(t[2]), t[0].max(t[1]).max(t[2]));
+    let boxes: Vec<(DVec3, DVec3)> = tris.iter().map(tri_box).collect();
+    let mut order: Vec<usize> = (0..tris.len()).collect();
+    order.sort_by(|&i, &j| boxes[i].0.x.total_cmp(&boxes[j].0.x));
+    for (k, &i) in order.iter().enumerate() {
+        for &j in order[k + 1..].iter().take_while(|&&j| boxes[j].0.x <= boxes[i].1.x) {
+            let (t, u) = (e.triangles[i], e.triangles[j]);
+            if u.iter().any(|v| t.contains(v)) || !boxes_meet(boxes[i], boxes[j]) {
+                continue;
+            }
+            let (x, y) = (tris[i], tris[j]);
+            if (0..3).any(|k| segment_hits(y[k], y[(k + 1) % 3], x) || segment_hits(x[k], x[(k + 1) % 3], y)) {
+                return true;
+            }
+        }
+    }
+    false
+}
+
 /// A closed solid turned about `z`: its profile runs from the axis at
 /// `z = 0` through `corners` (radius, height), the last on the axis, in
 /// steps of at most 0.75 mm, with 64 segments round.
