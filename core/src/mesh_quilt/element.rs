@@ -129,6 +129,22 @@ impl Element {
         if count == 0 { 0.0 } else { sum / count as f64 }
     }
 
+    /// The longest edge, mm (0 with no triangles).
+    ///
+    /// ```
+    /// use tracery_core::mesh_quilt::Element;
+    /// use glam::DVec3;
+    /// let t = Element { vertices: vec![DVec3::ZERO, DVec3::X * 3.0, DVec3::Y * 4.0], triangles: vec![[0, 1, 2]] };
+    /// assert_eq!(t.longest_edge_mm(), 5.0);
+    /// ```
+    pub fn longest_edge_mm(&self) -> f64 {
+        self.triangles
+            .iter()
+            .flat_map(|t| (0..3).map(move |k| (t[k], t[(k + 1) % 3])))
+            .map(|(a, b)| self.vertices[a as usize].distance(self.vertices[b as usize]))
+            .fold(0.0, f64::max)
+    }
+
     /// The vertices next to each vertex (the 1-ring), sorted.
     pub fn neighbours(&self) -> Vec<Vec<u32>> {
         crate::mesh::vertex_rings(self.vertices.len(), &self.triangles)

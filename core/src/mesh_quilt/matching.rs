@@ -161,10 +161,15 @@ pub(super) fn best_translation(
     let (a, b) = candidates[good[random.below(good.len() as u64) as usize]];
     // Refined off the grid by the mean offset of the close pairs: a swatch
     // whose period is not a whole number of cells still lines up. On a
-    // curved base the pairs also turn it (a 2D Procrustes fit): the field
-    // is matched only at the seed, and straight threads on the flattened
-    // patch drift from the neighbour's.
+    // curved base the offset is first searched off the grid (the mean of
+    // pairs, taken half a cell off, pairs parts of the wrong elements), and
+    // the pairs also turn it (a 2D Procrustes fit): the field is matched
+    // only at the seed, and straight threads on the flattened patch drift
+    // from the neighbour's.
     let mut placement = Placement { offset_mm: DVec2::new(a as f64 * c, b as f64 * c), turn: DVec2::X };
+    if turn {
+        placement.offset_mm = finest_offset(input, samples, placement.offset_mm, lambda);
+    }
     for _ in 0..2 {
         let pairs: Vec<(DVec2, DVec2)> = samples
             .iter()
@@ -195,6 +200,50 @@ pub(super) fn best_translation(
         }
     }
     (a, b, placement)
+}
+
+/// Steps of the search off the grid, in cells, and how many steps it
+/// tries each way round the best offset so far: every quarter cell within
+/// half a cell of the grid's offset, then an eighth and a sixteenth round
+/// the best.
+const SUBCELL_STEPS: [(f64, i32); 3] = [(0.25, 2), (0.125, 1), (0.0625, 1)];
+
+/// The offset within half a cell of `offset_mm` at which the output's
+/// `samples` lie best on the swatch (the forward half of equation 1). On a
+/// curved base the seed's frame is the patch's own, so the grid's offsets
+/// hold the swatch only to within half a cell of where the output's
+/// elements lie: the swatch's links then missed the output's by up to
+/// 1.7 mm, did not correspond, and crossed them.
+fn finest_offset(input: &Input, samples: &[(DVec3, DVec3)], offset_mm: DVec2, lambda: f64) -> DVec2 {
+    let c = input.cell_mm;
+    if samples.is_empty() {
+        return offset_mm;
+    }
+    let cost = |offset: DVec2| -> f64 {
+        let t = offset.extend(0.0);
+        samples
+            .iter()
+            .map(|&(p, n)| match input.faces.closest(p - t) {
+                Some(hit) => pair_cost(hit.distance_mm, n, hit.normal, lambda, c),
+                None => pair_cost(2.0 * c, n, n, lambda, c),
+            })
+            .sum()
+    };
+    let mut best = (cost(offset_mm), offset_mm);
+    for (step, reach) in SUBCELL_STEPS {
+        let centre = best.1;
+        let tries: Vec<DVec2> = (-reach..=reach)
+            .flat_map(|j| (-reach..=reach).map(move |i| centre + DVec2::new(i as f64, j as f64) * step * c))
+            .filter(|&o| o != centre && (o - offset_mm).abs().max_element() <= 0.5 * c + 1e-9)
+            .collect();
+        let costs: Vec<(f64, DVec2)> = tries.par_iter().map(|&o| (cost(o), o)).collect();
+        for candidate in costs {
+            if candidate.0 < best.0 {
+                best = candidate;
+            }
+        }
+    }
+    best.1
 }
 
 /// Largest turn the refinement gives a patch, radians.

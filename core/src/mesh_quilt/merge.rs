@@ -36,6 +36,10 @@ const SPECK_TRIANGLES: usize = 12;
 /// element's mean edge lengths, for the strip to bridge.
 const SEAM_GAP_EDGES: f64 = 1.0;
 
+/// A stitch's strip may have edges this many times the longest edge of
+/// the two pieces it joins.
+const STRIP_LONGEST_EDGES: f64 = 2.0;
+
 /// Rounds of bending an element over and under what it would cross before
 /// it is left out.
 const GIVE_WAY_ROUNDS: usize = 3;
@@ -462,7 +466,12 @@ fn cut_and_stitch(c_out: &Element, c_in: &Element, grid: &impl Zones, reach_mm: 
     }
     // A stitch that passes through itself would print wrong and make the
     // booleans refuse the print: the pair is left unstitched instead.
-    stitch(&a, &b, 3.0 * reach_mm).filter(|joined| !crosses_itself(joined))
+    // A strip whose edges are longer than the pieces' own bridges two
+    // pieces that do not meet (on a top across which patches lie, a scale's
+    // strip spanned 6 mm where its edges are 1.9): it would print as a torn
+    // sheet, and the pair is left unstitched as well.
+    let longest_mm = STRIP_LONGEST_EDGES * a.longest_edge_mm().max(b.longest_edge_mm());
+    stitch(&a, &b, 3.0 * reach_mm).filter(|joined| joined.longest_edge_mm() <= longest_mm && !crosses_itself(joined))
 }
 
 fn without_specks(element: Element) -> Element {

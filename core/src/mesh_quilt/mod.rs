@@ -22,6 +22,7 @@ mod merge;
 mod patch;
 mod planar;
 mod product;
+mod resting;
 mod self_crossing;
 mod settings;
 mod shapes;

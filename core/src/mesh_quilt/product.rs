@@ -1,6 +1,8 @@
 //! [`make_product`]: a quilt as the [`Product`] every mode returns, its
 //! elements one mesh of separate closed shells, with its figures.
 
+use super::matching::reach_mm;
+use super::resting::{clearance_mm, keep_held};
 use super::{
     Element, GuidanceField, Quilt, QuiltError, Settings, Swatch, crosses_itself, quilt_plane, quilt_surface,
     trim_below, trim_to_area,
@@ -92,13 +94,8 @@ pub fn make_surface_product(
     // A piece left by the cut is kept where it still rests on the model:
     // sunk into it at least half the sink (a piece only grazing the foot's
     // edge would print loose), or touching it when nothing sinks.
-    let rests = |piece: &Element| {
-        let depth_mm = 0.5 * settings.sink_mm - TOUCH_TOLERANCE_MM;
-        piece.vertices.iter().any(|&p| {
-            let on = surface.closest_point(p.to_array());
-            (on.position_mm - p).dot(surface.normal(on.face, on.barycentric)) >= depth_mm
-        })
-    };
+    let rest_depth_mm = 0.5 * settings.sink_mm - TOUCH_TOLERANCE_MM;
+    let rests = |piece: &Element| clearance_mm(piece, surface) <= -rest_depth_mm;
     // The shell can bend a whole element through itself where the model
     // turns tightly (a vase's neck). Such an element prints wrong, and a
     // boolean's result made from it can come out pinched. It is left out
@@ -107,13 +104,12 @@ pub fn make_surface_product(
     let before = quilt.elements.len();
     product.timings.time("self-crossing", || quilt.elements.retain(|e| !crosses_itself(e)));
     let bent = before - quilt.elements.len();
-    // An element resting nowhere on the model would print as a loose body
-    // beside it, or fall off. Merging moves elements to meet their
-    // neighbours, and it has lifted two rivets near the vase's foot whole
-    // off it (0.1 and 0.6 mm above it): left out, as crumbs are.
-    let before = quilt.elements.len();
-    product.timings.time("floating", || quilt.elements.retain(rests));
-    let floating = before - quilt.elements.len();
+    // An element resting nowhere on the model, nor hanging from one that
+    // does as the swatch's floating elements do, would print loose.
+    let hold_mm = reach_mm(&swatch);
+    let floating = product.timings.time("floating", || {
+        keep_held(&mut quilt.elements, surface, &swatch, settings.sink_mm, rest_depth_mm, hold_mm)
+    });
     // Those that crossed themselves were just left out.
     describe(&mut product, &quilt, &swatch, 0);
     product.facts.push("left_out_self_crossing", Fact::Count(bent));

@@ -11,6 +11,10 @@ use crate::mesh::Mesh;
 /// The most triangles a swatch may have: the paper's largest had 35 640.
 pub const MAX_SWATCH_TRIANGLES: usize = 200_000;
 
+/// An element whose lowest point lies within this share of the swatch's
+/// height of its bottom rests on it.
+const FLOAT_TOLERANCE: f64 = 0.01;
+
 /// A swatch: elements in millimetres, its bounding box's lowest corner at
 /// the origin and its thinnest side along `z` (the shell's height).
 #[derive(Clone, Debug, PartialEq)]
@@ -107,6 +111,24 @@ impl Swatch {
             })
             .collect();
         Swatch { name: self.name.clone(), elements }
+    }
+
+    /// How high the lowest element not resting on the swatch's bottom
+    /// floats over it, mm: a chain mail's flat rings, held up by the
+    /// standing links through them. None when every element rests.
+    ///
+    /// ```
+    /// use tracery_core::mesh_quilt::builtin_swatch;
+    /// assert!(builtin_swatch("chainmail").unwrap().least_float_mm().is_some_and(|h| h > 2.0));
+    /// assert_eq!(builtin_swatch("rivets").unwrap().least_float_mm(), None);
+    /// ```
+    pub fn least_float_mm(&self) -> Option<f64> {
+        let floor = FLOAT_TOLERANCE * self.size_mm().z;
+        self.elements
+            .iter()
+            .map(|e| e.vertices.iter().map(|v| v.z).fold(f64::INFINITY, f64::min))
+            .filter(|&low| low > floor)
+            .min_by(f64::total_cmp)
     }
 
     /// Width, depth and height of the bounding box, mm.
