@@ -2,9 +2,10 @@
 //! carries a swatch element round a sharp crease of the model (a top's rim,
 //! where the swatch is too wide for the top to be quilted on its own) by
 //! folding it there, and stretches its upper part unevenly beside one: the
-//! element comes out crumpled, torn into long triangles, or through itself.
-//! Such an element is not laid; a thread is (it is cut at a rim, and cut and
-//! stitched where it meets its neighbours).
+//! element comes out crumpled, torn into long triangles, or through itself,
+//! and is not laid. (A weave's threads never meet such a crease: a top wide
+//! enough for them is quilted apart from the side, and threads reaching
+//! past its rim are cut there.)
 
 use glam::DVec3;
 
