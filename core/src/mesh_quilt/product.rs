@@ -2,7 +2,7 @@
 //! elements one mesh of separate closed shells, with its figures.
 
 use super::matching::reach_mm;
-use super::resting::{clearance_mm, keep_held};
+use super::resting::{keep_held, rests_on};
 use super::{
     Element, GuidanceField, Quilt, QuiltError, Settings, Swatch, crosses_itself, quilt_plane, quilt_surface,
     trim_below, trim_to_area,
@@ -95,7 +95,7 @@ pub fn make_surface_product(
     // sunk into it at least half the sink (a piece only grazing the foot's
     // edge would print loose), or touching it when nothing sinks.
     let rest_depth_mm = 0.5 * settings.sink_mm - TOUCH_TOLERANCE_MM;
-    let rests = |piece: &Element| clearance_mm(piece, surface) <= -rest_depth_mm;
+    let rests = |piece: &Element| rests_on(piece, surface, rest_depth_mm);
     // The shell can bend a whole element through itself where the model
     // turns tightly (a vase's neck). Such an element prints wrong, and a
     // boolean's result made from it can come out pinched. It is left out

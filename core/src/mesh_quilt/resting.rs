@@ -3,22 +3,29 @@
 //! (a chain mail's flat rings, held up by the standing links through
 //! them), those hanging from an element that rests.
 
+use glam::DVec3;
+
 use super::faces::Faces;
 use super::{Element, Swatch};
 use crate::surface::SurfaceMesh;
 
+/// How far above the model, mm, a point lies (negative where it is sunk
+/// into it), measured along the model's normal at the closest point.
+fn height_mm(p: DVec3, surface: &SurfaceMesh) -> f64 {
+    let on = surface.closest_point(p.to_array());
+    (p - on.position_mm).dot(surface.normal(on.face, on.barycentric))
+}
+
 /// How far above the model, mm, the lowest point of `element` lies
-/// (negative where it is sunk into it), measured along the model's normal
-/// at the closest point.
-pub(super) fn clearance_mm(element: &Element, surface: &SurfaceMesh) -> f64 {
-    element
-        .vertices
-        .iter()
-        .map(|&p| {
-            let on = surface.closest_point(p.to_array());
-            (p - on.position_mm).dot(surface.normal(on.face, on.barycentric))
-        })
-        .fold(f64::INFINITY, f64::min)
+/// (negative where it is sunk into it).
+fn clearance_mm(element: &Element, surface: &SurfaceMesh) -> f64 {
+    element.vertices.iter().map(|&p| height_mm(p, surface)).fold(f64::INFINITY, f64::min)
+}
+
+/// Whether some vertex of `element` is sunk at least `depth_mm` into the
+/// model: it rests on it.
+pub(super) fn rests_on(element: &Element, surface: &SurfaceMesh, depth_mm: f64) -> bool {
+    element.vertices.iter().any(|&p| height_mm(p, surface) <= -depth_mm)
 }
 
 /// Leaves out of `elements` those that would print loose: an element must
@@ -42,8 +49,7 @@ pub(super) fn keep_held(
     hold_mm: f64,
 ) -> usize {
     let before = elements.len();
-    let clearances: Vec<f64> = elements.iter().map(|e| clearance_mm(e, surface)).collect();
-    let rests: Vec<bool> = clearances.iter().map(|&c| c <= -rest_depth_mm).collect();
+    let rests: Vec<bool> = elements.iter().map(|e| rests_on(e, surface, rest_depth_mm)).collect();
     // Floating by design: as high as the swatch's floating elements, less
     // what lifts or sinks them in merging and the shell.
     let least_float_mm = swatch.least_float_mm().map(|h| 0.5 * (h - sink_mm)).filter(|&h| h > 0.0);
@@ -52,11 +58,10 @@ pub(super) fn keep_held(
             let resting = Faces::new(elements.iter().zip(&rests).filter(|(_, r)| **r).map(|(e, _)| e));
             elements
                 .iter()
-                .zip(&clearances)
                 .zip(&rests)
-                .map(|((e, &clearance), &rests)| {
+                .map(|(e, &rests)| {
                     !rests
-                        && clearance >= least_mm
+                        && clearance_mm(e, surface) >= least_mm
                         && e.vertices.iter().any(|&p| resting.closest_within(p, hold_mm).is_some())
                 })
                 .collect()
