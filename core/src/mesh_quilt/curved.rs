@@ -57,9 +57,9 @@ pub struct ShellReport {
     /// Threads on the side reaching up past a flat top's rim, cut off
     /// just under it.
     pub cut_under_rim: usize,
-    /// Elements not laid because the shell would have folded them round a
-    /// sharp crease or stretched them unevenly beside one (see
-    /// [`MAX_FOLD_DEG`], [`MAX_STRETCH_SPREAD`]).
+    /// Elements (not threads) not laid because the shell would have
+    /// folded them round a sharp crease or stretched them unevenly beside
+    /// one (see [`MAX_FOLD_DEG`], [`MAX_STRETCH_SPREAD`]).
     pub torn: usize,
 }
 
@@ -268,15 +268,19 @@ pub fn quilt_surface(
                 .collect();
             if let Some(on_patch) = on_patch {
                 let vertices: Vec<DVec3> = on_patch.iter().map(|&(p, _)| p).collect();
-                let normals: Vec<DVec3> = on_patch.iter().map(|&(_, f)| surface.face_normal(f)).collect();
-                // What lies under the floor, or over the faces the model
-                // stands on, is cut off at the floor (`foot`).
-                let kept = |k: usize| vertices[k].z > lowest && !standing[on_patch[k].1 as usize];
-                if largest_fold_deg(e, &normals, kept) > MAX_FOLD_DEG
-                    || stretch_spread(e, &vertices, kept) > MAX_STRETCH_SPREAD
-                {
-                    report.torn += 1;
-                    continue;
+                // A thread may bend: it is cut and stitched to its
+                // neighbours, and one bent round a rim is cut there.
+                if !e.is_thread() {
+                    let normals: Vec<DVec3> = on_patch.iter().map(|&(_, f)| surface.face_normal(f)).collect();
+                    // What lies under the floor, or over the faces the model
+                    // stands on, is cut off at the floor (`foot`).
+                    let kept = |k: usize| vertices[k].z > lowest && !standing[on_patch[k].1 as usize];
+                    if largest_fold_deg(e, &normals, kept) > MAX_FOLD_DEG
+                        || stretch_spread(e, &vertices, kept) > MAX_STRETCH_SPREAD
+                    {
+                        report.torn += 1;
+                        continue;
+                    }
                 }
                 placed.push(Element { vertices, triangles: e.triangles.clone() });
             } else if let Some(cap) = cap {
