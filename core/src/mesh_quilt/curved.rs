@@ -197,6 +197,16 @@ pub fn quilt_surface(
     // Prisms past anything an element laid on a cap can reach.
     let caps = FlatCaps::new(surface, field, &graph, sink_mm + size.z, 2.0 * size.z);
     let fragment_mm3 = swatch.fragment_volume_mm3();
+    // Which of the swatch's elements may bend round a crease: threads at
+    // least half as long as the swatch's shorter side.
+    let bends: Vec<bool> = swatch
+        .elements
+        .iter()
+        .map(|e| {
+            let (lo, hi) = e.bounds();
+            e.is_thread() && (hi - lo).truncate().max_element() >= 0.5 * size.x.min(size.y)
+        })
+        .collect();
     while let Some(seed) = most_constrained(&graph, &processed) {
         control.check()?;
         let Some(patch) = grow_patch(surface, &graph, seed, field, radius_mm, seed_uv, &mut report) else {
@@ -256,7 +266,7 @@ pub fn quilt_surface(
         };
         let cap = caps.of_face(seed);
         let mut placed: Vec<Element> = Vec::new();
-        for e in &swatch.elements {
+        for (k, e) in swatch.elements.iter().enumerate() {
             let on_patch: Option<Vec<(DVec3, u32)>> = e
                 .vertices
                 .iter()
@@ -268,9 +278,11 @@ pub fn quilt_surface(
                 .collect();
             if let Some(on_patch) = on_patch {
                 let vertices: Vec<DVec3> = on_patch.iter().map(|&(p, _)| p).collect();
-                // A thread may bend: it is cut and stitched to its
-                // neighbours, and one bent round a rim is cut there.
-                if !e.is_thread() {
+                // A thread running across the swatch may bend: it is cut
+                // and stitched to its neighbours, and one bent round a rim
+                // is cut there. A short one (a leaf) is laid whole, as a
+                // compact element is.
+                if !bends[k] {
                     let normals: Vec<DVec3> = on_patch.iter().map(|&(_, f)| surface.face_normal(f)).collect();
                     // What lies under the floor, or over the faces the model
                     // stands on, is cut off at the floor (`foot`).

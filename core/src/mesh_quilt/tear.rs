@@ -3,12 +3,14 @@
 //! where the swatch is too wide for the top to be quilted on its own) by
 //! folding it there, and stretches its upper part unevenly beside one: the
 //! element comes out crumpled, torn into long triangles, or through itself.
-//! Such an element is not laid; a thread is (it bends with the model, is
-//! cut at a flat top's rim, and cut and stitched where it meets its
-//! neighbours). Applied to threads too, the test left a tenth of the bellied
-//! post of `woven_threads_leave_few_holes_round_a_bellied_base` bare: its
-//! weave wraps creases of 30° to 36° and the rim of a top too narrow to be
-//! quilted on its own.
+//! Such an element is not laid; a thread running across the swatch is (it
+//! bends with the model, is cut at a flat top's rim, and is cut and
+//! stitched where it meets its neighbours). Applied to such threads too,
+//! the test left a tenth of the bellied post of
+//! `woven_threads_leave_few_holes_round_a_bellied_base` bare: its weave
+//! wraps creases of 30° to 36° and the rim of a top too narrow to be
+//! quilted on its own. A short thread (a leaf) is tested as a compact
+//! element is: leaves were folded jagged over the vase's rim.
 
 use glam::DVec3;
 
