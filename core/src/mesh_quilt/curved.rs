@@ -57,9 +57,10 @@ pub struct ShellReport {
     /// Threads on the side reaching up past a flat top's rim, cut off
     /// just under it.
     pub cut_under_rim: usize,
-    /// Elements (not threads) not laid because the shell would have
-    /// folded them round a sharp crease or stretched them unevenly beside
-    /// one (see [`MAX_FOLD_DEG`], [`MAX_STRETCH_SPREAD`]).
+    /// Elements not laid because the shell would have folded them round a
+    /// sharp crease or stretched them unevenly beside one (see
+    /// [`MAX_FOLD_DEG`], [`MAX_STRETCH_SPREAD`]); threads running across
+    /// the swatch bend and are laid.
     pub torn: usize,
 }
 

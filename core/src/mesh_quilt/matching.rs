@@ -77,6 +77,15 @@ fn pair_cost(distance_mm: f64, normal: DVec3, face_normal: DVec3, lambda: f64, c
     (1.0 + lambda * distance_mm / cell_mm) * (1.0 + (normal - face_normal).length())
 }
 
+/// The matching cost of a point with normal `normal` against its closest
+/// of `faces`; a point with none costs as one two cells off.
+fn closest_cost(faces: &Faces, point_mm: DVec3, normal: DVec3, lambda: f64, cell_mm: f64) -> f64 {
+    match faces.closest(point_mm) {
+        Some(hit) => pair_cost(hit.distance_mm, normal, hit.normal, lambda, cell_mm),
+        None => pair_cost(2.0 * cell_mm, normal, normal, lambda, cell_mm),
+    }
+}
+
 /// The best translation of the swatch for the patch around `seed`: the grid
 /// offset `(a, b)` in cells, and the placement refined from it (turned
 /// too when `turn`). `to_output` carries a point and normal of the seed's frame to output
@@ -128,10 +137,7 @@ pub(super) fn best_translation(
         let (ns, nr) = (samples.len().max(1) as f64, reverse.len().max(1) as f64);
         let mut forward = 0.0;
         for (k, &(p, n)) in samples.iter().enumerate() {
-            forward += match input.faces.closest(p - t) {
-                Some(hit) => pair_cost(hit.distance_mm, n, hit.normal, lambda, c),
-                None => pair_cost(2.0 * c, n, n, lambda, c),
-            };
+            forward += closest_cost(&input.faces, p - t, n, lambda, c);
             if beyond((forward + (samples.len() - k - 1) as f64) / ns + reverse_least) {
                 return f64::INFINITY;
             }
@@ -140,10 +146,7 @@ pub(super) fn best_translation(
         let mut back = 0.0;
         for (k, &(p, n)) in reverse.iter().enumerate() {
             back += match to_output(p, n) {
-                Some((q, m)) => match around.faces.closest(q) {
-                    Some(hit) => pair_cost(hit.distance_mm, m, hit.normal, lambda, c),
-                    None => pair_cost(2.0 * c, m, m, lambda, c),
-                },
+                Some((q, m)) => closest_cost(&around.faces, q, m, lambda, c),
                 None => pair_cost(2.0 * c, n, n, lambda, c),
             };
             if beyond(forward + (back + (reverse.len() - k - 1) as f64) / nr) {
@@ -221,13 +224,7 @@ fn finest_offset(input: &Input, samples: &[(DVec3, DVec3)], offset_mm: DVec2, la
     }
     let cost = |offset: DVec2| -> f64 {
         let t = offset.extend(0.0);
-        samples
-            .iter()
-            .map(|&(p, n)| match input.faces.closest(p - t) {
-                Some(hit) => pair_cost(hit.distance_mm, n, hit.normal, lambda, c),
-                None => pair_cost(2.0 * c, n, n, lambda, c),
-            })
-            .sum()
+        samples.iter().map(|&(p, n)| closest_cost(&input.faces, p - t, n, lambda, c)).sum()
     };
     let mut best = (cost(offset_mm), offset_mm);
     for (step, reach) in SUBCELL_STEPS {

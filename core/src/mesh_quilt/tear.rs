@@ -52,18 +52,10 @@ pub const MAX_STRETCH_SPREAD: f64 = 3.0;
 /// ```
 pub fn stretch_spread(element: &Element, placed_mm: &[DVec3], counts: impl Fn(usize) -> bool) -> f64 {
     let mut stretches: Vec<f64> = Vec::with_capacity(3 * element.triangles.len());
-    for t in &element.triangles {
-        for k in 0..3 {
-            // Each edge is shared by two triangles: taken once, from the
-            // lower corner.
-            let (a, b) = (t[k] as usize, t[(k + 1) % 3] as usize);
-            if a > b || !counts(a) || !counts(b) {
-                continue;
-            }
-            let before = element.vertices[a].distance(element.vertices[b]);
-            if before > 0.0 {
-                stretches.push(placed_mm[a].distance(placed_mm[b]) / before);
-            }
+    for (a, b) in counted_edges(element, &counts) {
+        let before = element.vertices[a].distance(element.vertices[b]);
+        if before > 0.0 {
+            stretches.push(placed_mm[a].distance(placed_mm[b]) / before);
         }
     }
     if stretches.is_empty() {
@@ -95,15 +87,21 @@ pub fn stretch_spread(element: &Element, placed_mm: &[DVec3], counts: impl Fn(us
 /// assert!((largest_fold_deg(&strip, &over_a_rim, |_| true) - 90.0).abs() < 1e-6);
 /// ```
 pub fn largest_fold_deg(element: &Element, normals: &[DVec3], counts: impl Fn(usize) -> bool) -> f64 {
-    let mut largest: f64 = 0.0;
-    for t in &element.triangles {
-        for k in 0..3 {
-            let (a, b) = (t[k] as usize, t[(k + 1) % 3] as usize);
-            if a > b || !counts(a) || !counts(b) {
-                continue;
-            }
-            largest = largest.max(normals[a].dot(normals[b]).clamp(-1.0, 1.0).acos().to_degrees());
-        }
-    }
-    largest
+    counted_edges(element, &counts)
+        .map(|(a, b)| normals[a].dot(normals[b]).clamp(-1.0, 1.0).acos().to_degrees())
+        .fold(0.0, f64::max)
+}
+
+/// The edges of `element` both of whose ends `counts` takes, each once:
+/// every edge is shared by two triangles, and is taken from the one where
+/// it runs from the lower corner.
+fn counted_edges<'a>(
+    element: &'a Element,
+    counts: &'a impl Fn(usize) -> bool,
+) -> impl Iterator<Item = (usize, usize)> + 'a {
+    element
+        .triangles
+        .iter()
+        .flat_map(|t| (0..3).map(move |k| (t[k] as usize, t[(k + 1) % 3] as usize)))
+        .filter(move |&(a, b)| a < b && counts(a) && counts(b))
 }
