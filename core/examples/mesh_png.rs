@@ -32,8 +32,11 @@ fn main() {
     }
     // Camera: looking along -y (from the front), tilted 25° down.
     let tilt = std::env::var("MESH_PNG_TILT_DEG").ok().and_then(|s| s.parse::<f64>().ok()).unwrap_or(25.0).to_radians();
-    let forward = DVec3::new(0.0, tilt.cos(), -tilt.sin());
-    let up = DVec3::new(0.0, tilt.sin(), tilt.cos());
+    let turn = std::env::var("MESH_PNG_TURN_DEG").ok().and_then(|s| s.parse::<f64>().ok()).unwrap_or(0.0).to_radians();
+    let (st, ct) = turn.sin_cos();
+    let spin = |v: DVec3| DVec3::new(ct * v.x - st * v.y, st * v.x + ct * v.y, v.z);
+    let forward = spin(DVec3::new(0.0, tilt.cos(), -tilt.sin()));
+    let up = spin(DVec3::new(0.0, tilt.sin(), tilt.cos()));
     let right = forward.cross(up);
     let project = |p: DVec3| DVec3::new(p.dot(right), p.dot(up), p.dot(forward));
     let (mut lo, mut hi) = (DVec3::splat(f64::MAX), DVec3::splat(f64::MIN));
