@@ -65,19 +65,27 @@ impl Element {
     /// assert!(!torus(DVec3::ZERO, DMat3::IDENTITY, 4.0, 0.8, 32, 10).is_thread());
     /// ```
     pub fn is_thread(&self) -> bool {
-        let n = self.vertices.len() as f64;
-        if n < 4.0 {
-            return false;
-        }
-        let centre = self.vertices.iter().copied().sum::<DVec3>() / n;
-        let covariance = faer::Mat::<f64>::from_fn(3, 3, |i, j| {
-            self.vertices.iter().map(|&v| (v - centre)[i] * (v - centre)[j]).sum::<f64>() / n
-        });
+        let Some((_, covariance)) = self.spread() else { return false };
         // Eigenvalues come in increasing order; they are variances, so
         // their square roots are spreads.
         let Ok(variances) = covariance.self_adjoint_eigenvalues(faer::Side::Lower) else { return false };
         let (long, across) = (variances[2].max(0.0).sqrt(), variances[1].max(0.0).sqrt());
         long >= super::THREAD_ASPECT * across
+    }
+
+    /// The centre of the element's vertices and their covariance (3 × 3),
+    /// whose eigenvectors are the directions it spreads along. None with
+    /// fewer than four vertices.
+    pub(super) fn spread(&self) -> Option<(DVec3, faer::Mat<f64>)> {
+        let n = self.vertices.len() as f64;
+        if n < 4.0 {
+            return None;
+        }
+        let centre = self.vertices.iter().copied().sum::<DVec3>() / n;
+        let covariance = faer::Mat::<f64>::from_fn(3, 3, |i, j| {
+            self.vertices.iter().map(|&v| (v - centre)[i] * (v - centre)[j]).sum::<f64>() / n
+        });
+        Some((centre, covariance))
     }
 
     /// A shared [`Mesh`] as an element (whole, however many parts it has).

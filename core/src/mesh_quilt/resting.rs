@@ -105,14 +105,7 @@ impl Hole {
     /// centre that none of its vertices lies within (measured across the
     /// plane). None when the element has no such opening (a rivet, a disk).
     fn of(element: &Element) -> Option<Hole> {
-        let n = element.vertices.len() as f64;
-        if n < 4.0 {
-            return None;
-        }
-        let centre_mm = element.vertices.iter().copied().sum::<DVec3>() / n;
-        let covariance = faer::Mat::<f64>::from_fn(3, 3, |i, j| {
-            element.vertices.iter().map(|&v| (v - centre_mm)[i] * (v - centre_mm)[j]).sum::<f64>() / n
-        });
+        let (centre_mm, covariance) = element.spread()?;
         let eigen = covariance.self_adjoint_eigen(faer::Side::Lower).ok()?;
         let u = eigen.U();
         let normal = DVec3::new(u[(0, 0)], u[(1, 0)], u[(2, 0)]).normalize_or_zero();
