@@ -41,6 +41,14 @@ const PATCH_SHRINK: f64 = 0.7;
 /// merging asks how near the footprint a point is, up to a few cells.
 const NEAR_CELLS: f64 = 4.0;
 
+/// The step by which an element folding over a crease is moved off it, as
+/// a share of its extent in the swatch's plane.
+const CREASE_SHIFT: f64 = 0.1;
+
+/// How many steps an element folding over a crease may be moved: up to
+/// 0.4 of its extent, so that it stays near where the swatch put it.
+const CREASE_SHIFT_STEPS: usize = 4;
+
 /// What the shell and the patches did, for the report.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct ShellReport {
@@ -268,33 +276,44 @@ pub fn quilt_surface(
         let cap = caps.of_face(seed);
         let mut placed: Vec<Element> = Vec::new();
         for (k, e) in swatch.elements.iter().enumerate() {
-            let on_patch: Option<Vec<(DVec3, u32)>> = e
-                .vertices
-                .iter()
-                .map(|&v| {
-                    let q = placement.to_frame(v);
-                    let (f, b) = patch.locate(q.truncate())?;
-                    Some((shell.point(surface, f, b, q.z - sink_mm), f))
-                })
-                .collect();
-            if let Some(on_patch) = on_patch {
+            // The element laid on the patch moved by `shift_mm` in its flat
+            // frame: each vertex in the shell, and the face under it.
+            let lay = |shift_mm: DVec2| -> Option<Vec<(DVec3, u32)>> {
+                e.vertices
+                    .iter()
+                    .map(|&v| {
+                        let q = placement.to_frame(v);
+                        let (f, b) = patch.locate(q.truncate() + shift_mm)?;
+                        Some((shell.point(surface, f, b, q.z - sink_mm), f))
+                    })
+                    .collect()
+            };
+            // What lies under the floor, or over the faces the model stands
+            // on, is cut off at the floor (`foot`): it does not count.
+            let folds = |on_patch: &[(DVec3, u32)]| {
                 let vertices: Vec<DVec3> = on_patch.iter().map(|&(p, _)| p).collect();
+                let normals: Vec<DVec3> = on_patch.iter().map(|&(_, f)| surface.face_normal(f)).collect();
+                let kept = |k: usize| vertices[k].z > lowest && !standing[on_patch[k].1 as usize];
+                largest_fold_deg(e, &normals, kept) > MAX_FOLD_DEG
+                    || stretch_spread(e, &vertices, kept) > MAX_STRETCH_SPREAD
+            };
+            if let Some(on_patch) = lay(DVec2::ZERO) {
                 // A thread running across the swatch may bend: it is cut
                 // and stitched to its neighbours, and one bent round a rim
                 // is cut there. A short one (a leaf) is laid whole, as a
-                // compact element is.
-                if !bends[k] {
-                    let normals: Vec<DVec3> = on_patch.iter().map(|&(_, f)| surface.face_normal(f)).collect();
-                    // What lies under the floor, or over the faces the model
-                    // stands on, is cut off at the floor (`foot`).
-                    let kept = |k: usize| vertices[k].z > lowest && !standing[on_patch[k].1 as usize];
-                    if largest_fold_deg(e, &normals, kept) > MAX_FOLD_DEG
-                        || stretch_spread(e, &vertices, kept) > MAX_STRETCH_SPREAD
-                    {
-                        report.torn += 1;
-                        continue;
+                // compact element is, or moved off the crease.
+                let on_patch = if !bends[k] && folds(&on_patch) {
+                    match off_the_crease(e, lay, folds) {
+                        Some(moved) => moved,
+                        None => {
+                            report.torn += 1;
+                            continue;
+                        }
                     }
-                }
+                } else {
+                    on_patch
+                };
+                let vertices: Vec<DVec3> = on_patch.iter().map(|&(p, _)| p).collect();
                 placed.push(Element { vertices, triangles: e.triangles.clone() });
             } else if let Some(cap) = cap {
                 // Past the patch's edge on a flat cap: laid whole in its
@@ -470,4 +489,34 @@ fn neighbourhood<'a>(
         }
     }
     Neighbourhood { window, samples: thin(samples), faces: Faces::new(near.iter().copied()) }
+}
+
+/// A compact element that would fold over a crease, laid instead at the
+/// nearest of a few shifts in its patch's flat frame (up to
+/// [`CREASE_SHIFT_STEPS`] steps of [`CREASE_SHIFT`] of its extent, in
+/// eight directions) where it lies whole on one side of the crease, and
+/// one step farther where that clears it too. Left out, such elements
+/// left a bare band round every rim; moved a little, most of them fit
+/// beside it. The element moves rigidly in the flat frame, so it stays the
+/// swatch's. None when no shift clears the crease.
+fn off_the_crease(
+    element: &Element,
+    lay: impl Fn(DVec2) -> Option<Vec<(DVec3, u32)>>,
+    folds: impl Fn(&[(DVec3, u32)]) -> bool,
+) -> Option<Vec<(DVec3, u32)>> {
+    let (lo, hi) = element.footprint();
+    let step_mm = CREASE_SHIFT * (hi - lo).max_element();
+    let at = |d: usize, steps: usize| {
+        let shift_mm = DVec2::from_angle(d as f64 * std::f64::consts::FRAC_PI_4) * steps as f64 * step_mm;
+        lay(shift_mm).filter(|on_patch| !folds(on_patch))
+    };
+    (1..=CREASE_SHIFT_STEPS).find_map(|ring| {
+        (0..8).find_map(|d| {
+            let first = at(d, ring)?;
+            // Just clear of the crease, the shell's spread at a rim still
+            // lifts the element's upper side past it (scales stood over
+            // the cylinder's rim): one step more, where that clears too.
+            Some(at(d, ring + 1).unwrap_or(first))
+        })
+    })
 }
