@@ -393,7 +393,6 @@ fn cut_and_stitch(c_out: &Element, c_in: &Element, grid: &impl Zones, reach_mm: 
         .collect();
     let mut distance = vec![4.0 * reach_mm; c_out.vertices.len()];
     let mut sink_vertex = vec![false; c_out.vertices.len()];
-    let mut overlapping = vec![false; c_out.vertices.len()];
     let mut asked = vec![false; c_out.vertices.len()];
     for &f in &active {
         for v in c_out.triangles[f as usize] {
@@ -403,8 +402,7 @@ fn cut_and_stitch(c_out: &Element, c_in: &Element, grid: &impl Zones, reach_mm: 
             }
             let Some(h) = in_faces.closest(c_out.vertices[v as usize]) else { continue };
             distance[v as usize] = h.distance_mm;
-            overlapping[v as usize] = h.distance_mm <= reach_mm;
-            sink_vertex[v as usize] = overlapping[v as usize]
+            sink_vertex[v as usize] = h.distance_mm <= reach_mm
                 && (grid.zone(c_in.face_centre(h.face as usize)) == Zone::New || frontier[h.face as usize]);
         }
     }
@@ -414,7 +412,7 @@ fn cut_and_stitch(c_out: &Element, c_in: &Element, grid: &impl Zones, reach_mm: 
     // continuation (117 of 253 unstitched pairs of the vase's weave). The
     // part of it that lies along the swatch's then gives way to it.
     if c_in.is_thread() && !sink_vertex.contains(&true) && frontier.contains(&true) {
-        sink_vertex = overlapping;
+        sink_vertex = distance.iter().map(|&d| d <= reach_mm).collect();
     }
     let drop: Vec<(u32, i64)> = active
         .iter()

@@ -61,21 +61,22 @@ pub(super) fn keep_held(
     let least_float_mm = swatch.least_float_mm().map(|h| 0.5 * (h - sink_mm)).filter(|&h| h > 0.0);
     let hangs: Vec<bool> = match least_float_mm {
         Some(least_mm) => {
-            let resting = Faces::new(elements.iter().zip(&rests).filter(|(_, r)| **r).map(|(e, _)| e));
+            let resting: Vec<&Element> = elements.iter().zip(&rests).filter(|(_, r)| **r).map(|(e, _)| e).collect();
+            let resting_faces = Faces::new(resting.iter().copied());
+            let resting_bounds: Vec<(DVec3, DVec3)> = resting.iter().map(|e| e.bounds()).collect();
             elements
                 .iter()
                 .zip(&rests)
                 .map(|(e, &sunk)| {
                     !sunk
                         && clearance_mm(e, surface) >= least_mm
-                        && e.vertices.iter().any(|&p| resting.closest_within(p, hold_mm).is_some())
+                        && e.vertices.iter().any(|&p| resting_faces.closest_within(p, hold_mm).is_some())
                         && Hole::of(e).is_none_or(|hole| {
-                            let (lo, hi) = e.bounds();
-                            elements
+                            let bounds = e.bounds();
+                            resting
                                 .iter()
-                                .zip(&rests)
-                                .filter(|&(o, &r)| r && boxes_overlap(o.bounds(), (lo, hi)))
-                                .any(|(o, _)| hole.threaded_by(o))
+                                .zip(&resting_bounds)
+                                .any(|(o, &o_bounds)| boxes_overlap(o_bounds, bounds) && hole.threaded_by(o))
                         })
                 })
                 .collect()
