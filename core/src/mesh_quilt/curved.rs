@@ -45,6 +45,10 @@ const NEAR_CELLS: f64 = 4.0;
 /// a share of its extent in the swatch's plane.
 const CREASE_SHIFT: f64 = 0.1;
 
+/// Patches of a swatch whose elements hang on each other keep to one side
+/// of a crease sharper than this (the cosine of 35°, [`MAX_FOLD_DEG`]).
+const CREASE_COS: f64 = 0.819;
+
 /// How many steps an element folding over a crease may be moved: up to
 /// 0.4 of its extent, so that it stays near where the swatch put it.
 const CREASE_SHIFT_STEPS: usize = 4;
@@ -216,9 +220,20 @@ pub fn quilt_surface(
             e.is_thread() && (hi - lo).truncate().max_element() >= 0.5 * size.x.min(size.y)
         })
         .collect();
+    // A swatch whose elements hang on each other (chain mail's flat rings,
+    // held up by the links through them) holds together only where each
+    // patch's elements meet the last's exactly. Its patches keep to one
+    // side of a crease: a patch run over the rim of a top narrower than
+    // the swatch (not a cap of its own) was laid flat with the side's
+    // lattice bent by up to four times in area, and the next patch's links
+    // met the last's millimetres off. Other swatches' patches still run
+    // over a rim, and their elements are moved off it (`off_the_crease`),
+    // or, threads, bend round it.
+    let interlocked = swatch.least_float_mm().is_some() && !bends.contains(&true);
     while let Some(seed) = most_constrained(&graph, &processed) {
         control.check()?;
-        let Some(patch) = grow_patch(surface, &graph, seed, field, radius_mm, seed_uv, &mut report) else {
+        let Some(patch) = grow_patch(surface, &graph, seed, field, (radius_mm, interlocked), seed_uv, &mut report)
+        else {
             processed[seed as usize] = true;
             report.bare_seeds += 1;
             continue;
@@ -239,7 +254,7 @@ pub fn quilt_surface(
             .collect();
         let around = neighbourhood(&closest, &patch, &quilt.elements, &window, cell_mm, sink_mm);
         let (_, _, placement) =
-            best_translation(&input, &around, (0, 0), settings, reach, to_output, true, &mut random);
+            best_translation(&input, &around, (0, 0), settings, reach, to_output, (true, interlocked), &mut random);
         // The swatch's cells it claims, in the swatch's own frame.
         let claimed = (
             DVec2::splat(MARGIN_CELLS as f64) * cell_mm,
@@ -418,13 +433,15 @@ fn most_constrained(graph: &FaceGraph, processed: &[bool]) -> Option<u32> {
     best.map(|(f, _)| f)
 }
 
-/// The patch around `seed`, shrunk until it lays flat within the limits.
+/// The patch around `seed`, within `radius_mm` and, when
+/// `keep_off_creases`, on the seed's side of every crease sharper than
+/// [`CREASE_COS`]; shrunk until it lays flat within the limits.
 fn grow_patch(
     surface: &SurfaceMesh,
     graph: &FaceGraph,
     seed: u32,
     field: &GuidanceField,
-    radius_mm: f64,
+    (radius_mm, keep_off_creases): (f64, bool),
     seed_uv: DVec2,
     report: &mut ShellReport,
 ) -> Option<Patch> {
@@ -434,7 +451,9 @@ fn grow_patch(
         // there, and a swatch laid across it would run the wrong way on the
         // far side (see `GuidanceField::with_straight_caps`).
         let faces: Vec<u32> = graph
-            .within(&[seed], radius)
+            .within_where(&[seed], radius, |f, g| {
+                !keep_off_creases || surface.face_normal(f).dot(surface.face_normal(g)) >= CREASE_COS
+            })
             .into_iter()
             .map(|(f, _)| f)
             .filter(|&f| field.on_cap(f) == field.on_cap(seed))

@@ -90,6 +90,12 @@ impl FaceGraph {
     /// Faces within `radius_mm` of any of `seeds` along the face graph
     /// (centre to centre), with their distances, nearest first.
     pub fn within(&self, seeds: &[u32], radius_mm: f64) -> Vec<(u32, f64)> {
+        self.within_where(seeds, radius_mm, |_, _| true)
+    }
+
+    /// As [`FaceGraph::within`], stepping from a face to its neighbour
+    /// only where `crosses(from, to)` says it may.
+    pub fn within_where(&self, seeds: &[u32], radius_mm: f64, crosses: impl Fn(u32, u32) -> bool) -> Vec<(u32, f64)> {
         let mut best: FxHashMap<u32, f64> = seeds.iter().map(|&s| (s, 0.0)).collect();
         let mut heap: BinaryHeap<Reverse<(u64, u32)>> = seeds.iter().map(|&s| Reverse((0, s))).collect();
         let mut out = Vec::new();
@@ -100,6 +106,9 @@ impl FaceGraph {
             }
             out.push((f, d));
             for &g in &self.neighbours[f as usize] {
+                if !crosses(f, g) {
+                    continue;
+                }
                 let e = d + self.centres[f as usize].distance(self.centres[g as usize]);
                 if e <= radius_mm && best.get(&g).is_none_or(|&b| e < b) {
                     best.insert(g, e);

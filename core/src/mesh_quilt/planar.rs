@@ -171,7 +171,8 @@ pub fn quilt_plane(
             .collect();
         let around = neighbourhood(&quilt.elements, &grid, &window);
         let to_output = |p: DVec3, n: DVec3| Some((p, n));
-        let (a, b, offset) = best_translation(&input, &around, seed, settings, reach_mm, to_output, false, &mut random);
+        let (a, b, offset) =
+            best_translation(&input, &around, seed, settings, reach_mm, to_output, (false, false), &mut random);
         grid.footprint = [a + MARGIN_CELLS, b + MARGIN_CELLS, a + sx - MARGIN_CELLS, b + sy - MARGIN_CELLS];
         let placed: Vec<Element> = swatch.elements.iter().map(|e| e.translated(offset.offset_mm.extend(0.0))).collect();
         let counts = merge_patch(&mut quilt.elements, &mut output_faces, placed, &grid, settings, reach_mm);
