@@ -9,7 +9,7 @@ use glam::DVec3;
 use quilt_support::turned;
 use tracery_core::control::Control;
 use tracery_core::mesh::Mesh;
-use tracery_core::mesh_quilt::{GuidanceField, Settings, builtin_swatch, make_surface_product};
+use tracery_core::mesh_quilt::{GuidanceField, Settings, Swatch, builtin_swatch, make_surface_product};
 use tracery_core::surface::{SurfaceMesh, builtin_base};
 
 /// The mesh's bodies (triangles joined through shared corners), each as
@@ -38,6 +38,20 @@ fn bodies(mesh: &Mesh) -> Vec<Vec<DVec3>> {
     by_root.into_values().collect()
 }
 
+/// `swatch` quilted over `base` along its parallels, as printed: the
+/// product's mesh.
+fn printed(swatch: &Swatch, base: &SurfaceMesh) -> Mesh {
+    let product = make_surface_product(
+        swatch,
+        base,
+        &GuidanceField::around_axis(base),
+        &Settings::default(),
+        &Control::default(),
+    )
+    .unwrap();
+    product.mesh_mm.unwrap()
+}
+
 /// A disk 80 mm across and 6 mm thick: its top is flat and wider than the
 /// chain mail's diagonal, so it is quilted as a plane is, through the
 /// curved bases' patches and shell.
@@ -55,15 +69,7 @@ fn chain_mail_over_a_model_keeps_its_flat_rings_and_its_density() {
     let disk = turned(&[(40.0, 0.0), (40.0, 6.0), (0.0, 6.0)]);
     let swatch = builtin_swatch("chainmail").unwrap();
     let size = swatch.size_mm();
-    let product = make_surface_product(
-        &swatch,
-        &disk,
-        &GuidanceField::around_axis(&disk),
-        &Settings::default(),
-        &Control::default(),
-    )
-    .unwrap();
-    let mesh = product.mesh_mm.as_ref().unwrap();
+    let mesh = &printed(&swatch, &disk);
     // Bodies over the middle of the top, clear of the rim.
     let (mut flat, mut standing) = (0, 0);
     for body in bodies(mesh) {
@@ -140,15 +146,7 @@ fn every_flat_ring_over_a_model_hangs_on_a_link_through_it() {
 fn chain_mail_round_a_cylinder_keeps_its_lattice_past_the_rim() {
     let cylinder = SurfaceMesh::new(builtin_base("cylinder").unwrap()).unwrap();
     let swatch = builtin_swatch("chainmail").unwrap();
-    let product = make_surface_product(
-        &swatch,
-        &cylinder,
-        &GuidanceField::around_axis(&cylinder),
-        &Settings::default(),
-        &Control::default(),
-    )
-    .unwrap();
-    let mesh = product.mesh_mm.as_ref().unwrap();
+    let mesh = &printed(&swatch, &cylinder);
     let radial = |v: &DVec3| v.truncate().length();
     let (mut flat, mut standing): (Vec<Vec<DVec3>>, Vec<Vec<DVec3>>) = (Vec::new(), Vec::new());
     for body in bodies(mesh) {
