@@ -90,8 +90,7 @@ fn closest_cost(faces: &Faces, point_mm: DVec3, normal: DVec3, lambda: f64, cell
 /// offset `(a, b)` in cells, and the placement refined from it (turned
 /// too when `turn`; each good offset searched off the grid before one is
 /// picked when `refine_each`). `to_output` carries a point and normal of
-/// the seed's frame to output
-/// space, or says it falls off the base.
+/// the seed's frame to output space, or says it falls off the base.
 #[allow(clippy::too_many_arguments)]
 pub(super) fn best_translation(
     input: &Input,
@@ -171,26 +170,23 @@ pub(super) fn best_translation(
     // (`refine_each`), each is searched off the grid first, and the pick is
     // made among the best of those: on the cylinder, chain mail's matched
     // links then lie 0.35 mm apart at the median patch, 1.1 mm before.
-    let good: Vec<usize> = if refine_each && good.len() > 1 {
-        let refined: Vec<f64> = good
-            .par_iter()
-            .map(|&k| {
-                let (a, b) = candidates[k];
-                let offset = finest_offset(input, samples, DVec2::new(a as f64 * c, b as f64 * c), lambda);
-                let t = offset.extend(0.0);
-                samples.iter().map(|&(p, n)| closest_cost(&input.faces, p - t, n, lambda, c)).sum::<f64>()
-            })
-            .collect();
-        let best = refined.iter().copied().fold(f64::INFINITY, f64::min);
+    let grid_offset = |k: usize| DVec2::new(candidates[k].0 as f64 * c, candidates[k].1 as f64 * c);
+    // Each good offset with where the search off the grid took it, when
+    // `refine_each`; the grid's offset alone otherwise.
+    let good: Vec<(usize, Option<DVec2>)> = if refine_each && good.len() > 1 {
+        let refined: Vec<(DVec2, f64)> =
+            good.par_iter().map(|&k| finest_offset(input, samples, grid_offset(k), lambda)).collect();
+        let best = refined.iter().map(|&(_, cost)| cost).fold(f64::INFINITY, f64::min);
         good.iter()
             .zip(&refined)
-            .filter(|&(_, &r)| r <= best * (1.0 + settings.tolerance) + 1e-9)
-            .map(|(&k, _)| k)
+            .filter(|&(_, &(_, cost))| cost <= best * (1.0 + settings.tolerance) + 1e-9)
+            .map(|(&k, &(offset, _))| (k, Some(offset)))
             .collect()
     } else {
-        good
+        good.into_iter().map(|k| (k, None)).collect()
     };
-    let (a, b) = candidates[good[random.below(good.len() as u64) as usize]];
+    let (k, refined) = good[random.below(good.len() as u64) as usize];
+    let (a, b) = candidates[k];
     // Refined off the grid by the mean offset of the close pairs: a swatch
     // whose period is not a whole number of cells still lines up. On a
     // curved base the offset is first searched off the grid (the mean of
@@ -198,10 +194,12 @@ pub(super) fn best_translation(
     // the pairs also turn it (a 2D Procrustes fit): the field is matched
     // only at the seed, and straight threads on the flattened patch drift
     // from the neighbour's.
-    let mut placement = Placement { offset_mm: DVec2::new(a as f64 * c, b as f64 * c), turn: DVec2::X };
-    if turn {
-        placement.offset_mm = finest_offset(input, samples, placement.offset_mm, lambda);
-    }
+    let offset_mm = match refined {
+        Some(offset) => offset,
+        None if turn => finest_offset(input, samples, grid_offset(k), lambda).0,
+        None => grid_offset(k),
+    };
+    let mut placement = Placement { offset_mm, turn: DVec2::X };
     for _ in 0..2 {
         let pairs: Vec<(DVec2, DVec2)> = samples
             .iter()
@@ -241,15 +239,16 @@ pub(super) fn best_translation(
 const SUBCELL_STEPS: [(f64, i32); 3] = [(0.25, 2), (0.125, 1), (0.0625, 1)];
 
 /// The offset within half a cell of `offset_mm` at which the output's
-/// `samples` lie best on the swatch (the forward half of equation 1). On a
+/// `samples` lie best on the swatch, with its cost (the forward half of
+/// equation 1, summed). On a
 /// curved base the seed's frame is the patch's own, so the grid's offsets
 /// hold the swatch only to within half a cell of where the output's
 /// elements lie: the swatch's links then missed the output's by up to
 /// 1.7 mm, did not correspond, and crossed them.
-fn finest_offset(input: &Input, samples: &[(DVec3, DVec3)], offset_mm: DVec2, lambda: f64) -> DVec2 {
+fn finest_offset(input: &Input, samples: &[(DVec3, DVec3)], offset_mm: DVec2, lambda: f64) -> (DVec2, f64) {
     let c = input.cell_mm;
     if samples.is_empty() {
-        return offset_mm;
+        return (offset_mm, 0.0);
     }
     let cost = |offset: DVec2| -> f64 {
         let t = offset.extend(0.0);
@@ -269,7 +268,7 @@ fn finest_offset(input: &Input, samples: &[(DVec3, DVec3)], offset_mm: DVec2, la
             }
         }
     }
-    best.1
+    (best.1, best.0)
 }
 
 /// Largest turn the refinement gives a patch, radians.
