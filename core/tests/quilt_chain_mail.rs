@@ -38,17 +38,11 @@ fn bodies(mesh: &Mesh) -> Vec<Vec<DVec3>> {
     by_root.into_values().collect()
 }
 
-/// `swatch` quilted over `base` along its parallels, as printed: the
-/// product's mesh.
-fn printed(swatch: &Swatch, base: &SurfaceMesh) -> Mesh {
-    let product = make_surface_product(
-        swatch,
-        base,
-        &GuidanceField::around_axis(base),
-        &Settings::default(),
-        &Control::default(),
-    )
-    .unwrap();
+/// `swatch` quilted over `base` along its parallels with `settings`, as
+/// printed: the product's mesh.
+fn printed(swatch: &Swatch, base: &SurfaceMesh, settings: &Settings) -> Mesh {
+    let product =
+        make_surface_product(swatch, base, &GuidanceField::around_axis(base), settings, &Control::default()).unwrap();
     product.mesh_mm.unwrap()
 }
 
@@ -69,7 +63,7 @@ fn chain_mail_over_a_model_keeps_its_flat_rings_and_its_density() {
     let disk = turned(&[(40.0, 0.0), (40.0, 6.0), (0.0, 6.0)]);
     let swatch = builtin_swatch("chainmail").unwrap();
     let size = swatch.size_mm();
-    let mesh = &printed(&swatch, &disk);
+    let mesh = &printed(&swatch, &disk, &Settings::default());
     // Bodies over the middle of the top, clear of the rim.
     let (mut flat, mut standing) = (0, 0);
     for body in bodies(mesh) {
@@ -117,10 +111,7 @@ fn every_flat_ring_over_a_model_hangs_on_a_link_through_it() {
     for seed in 1..=3 {
         let mut settings = Settings::default();
         settings.seed = seed;
-        let product =
-            make_surface_product(&swatch, &disk, &GuidanceField::around_axis(&disk), &settings, &Control::default())
-                .unwrap();
-        let all = bodies(product.mesh_mm.as_ref().unwrap());
+        let all = bodies(&printed(&swatch, &disk, &settings));
         // Over the top, clear of the rim; resting bodies sink into it.
         let over_top: Vec<&Vec<DVec3>> =
             all.iter().filter(|b| b.iter().all(|v| v.truncate().length() < 39.5 && v.z > 3.0)).collect();
@@ -146,7 +137,7 @@ fn every_flat_ring_over_a_model_hangs_on_a_link_through_it() {
 fn chain_mail_round_a_cylinder_keeps_its_lattice_past_the_rim() {
     let cylinder = SurfaceMesh::new(builtin_base("cylinder").unwrap()).unwrap();
     let swatch = builtin_swatch("chainmail").unwrap();
-    let mesh = &printed(&swatch, &cylinder);
+    let mesh = &printed(&swatch, &cylinder, &Settings::default());
     let radial = |v: &DVec3| v.truncate().length();
     let (mut flat, mut standing): (Vec<Vec<DVec3>>, Vec<Vec<DVec3>>) = (Vec::new(), Vec::new());
     for body in bodies(mesh) {
