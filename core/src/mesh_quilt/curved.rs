@@ -166,9 +166,35 @@ pub fn quilt_surface(
         )));
     }
     let size = swatch.size_mm();
+    // Which of the swatch's elements may bend round a crease: threads at
+    // least half as long as the swatch's shorter side.
+    let bends: Vec<bool> = swatch
+        .elements
+        .iter()
+        .map(|e| {
+            let (lo, hi) = e.bounds();
+            e.is_thread() && (hi - lo).truncate().max_element() >= 0.5 * size.x.min(size.y)
+        })
+        .collect();
+    // A swatch whose elements hang on each other (chain mail's flat rings,
+    // held up by the links through them) holds together only where each
+    // patch's elements meet the last's exactly. Its patches keep to one
+    // side of a crease: a patch run over the rim of a top narrower than
+    // the swatch (not a cap of its own) was laid flat with the side's
+    // lattice bent by up to four times in area, and the next patch's links
+    // met the last's millimetres off. Other swatches' patches still run
+    // over a rim, and their elements are moved off it (`off_the_crease`),
+    // or, threads, bend round it.
+    let interlocked = swatch.least_float_mm().is_some() && !bends.contains(&true);
     // Rows can follow a circle round the axis about as tight as the swatch
     // is wide; across a cap they lie straight (see `with_straight_caps`).
-    let field = &field.clone().with_straight_caps(surface, size.x.hypot(size.y));
+    // An interlocked swatch's patches keep to the top (above), so a top of
+    // any width is straight for it: round, the rows turned from one patch
+    // to the next and the cylinder's top, narrower than the swatch, was a
+    // heap of rings.
+    let turn_radius_mm = size.x.hypot(size.y);
+    let least_across_mm = if interlocked { 0.0 } else { turn_radius_mm };
+    let field = &field.clone().with_straight_caps(surface, turn_radius_mm, least_across_mm);
     let triangles = surface.triangles();
     let area_mm2: f64 = triangles.iter().map(|t| triangle_area_3d(t.map(|v| surface.positions()[v as usize]))).sum();
     let estimate = (swatch.triangle_count() as f64 * area_mm2 / (size.x * size.y)) as usize;
@@ -210,26 +236,6 @@ pub fn quilt_surface(
     // Prisms past anything an element laid on a cap can reach.
     let caps = FlatCaps::new(surface, field, &graph, sink_mm + size.z, 2.0 * size.z);
     let fragment_mm3 = swatch.fragment_volume_mm3();
-    // Which of the swatch's elements may bend round a crease: threads at
-    // least half as long as the swatch's shorter side.
-    let bends: Vec<bool> = swatch
-        .elements
-        .iter()
-        .map(|e| {
-            let (lo, hi) = e.bounds();
-            e.is_thread() && (hi - lo).truncate().max_element() >= 0.5 * size.x.min(size.y)
-        })
-        .collect();
-    // A swatch whose elements hang on each other (chain mail's flat rings,
-    // held up by the links through them) holds together only where each
-    // patch's elements meet the last's exactly. Its patches keep to one
-    // side of a crease: a patch run over the rim of a top narrower than
-    // the swatch (not a cap of its own) was laid flat with the side's
-    // lattice bent by up to four times in area, and the next patch's links
-    // met the last's millimetres off. Other swatches' patches still run
-    // over a rim, and their elements are moved off it (`off_the_crease`),
-    // or, threads, bend round it.
-    let interlocked = swatch.least_float_mm().is_some() && !bends.contains(&true);
     while let Some(seed) = most_constrained(&graph, &processed) {
         control.check()?;
         let Some(patch) = grow_patch(surface, &graph, seed, field, (radius_mm, interlocked), seed_uv, &mut report)

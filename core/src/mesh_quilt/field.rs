@@ -161,7 +161,7 @@ impl GuidanceField {
     /// smooth edges (normals within [`CAP_SMOOTH_DEG`]) that still face
     /// along the axis (within [`CAP_FACING_DEG`]). A cap whose edge is a
     /// crease all round (a flat top's rim) and that is at least
-    /// `turn_radius_mm` across is kept, and its faces take the `x` axis
+    /// `least_across_mm` across is kept, and its faces take the `x` axis
     /// instead.
     ///
     /// Why: round a pole or across a flat top the circles shrink to a point,
@@ -179,7 +179,7 @@ impl GuidanceField {
     /// use tracery_core::mesh_quilt::GuidanceField;
     /// use tracery_core::surface::{SurfaceMesh, builtin_base};
     /// let cylinder = SurfaceMesh::new(builtin_base("cylinder").unwrap()).unwrap();
-    /// let field = GuidanceField::around_axis(&cylinder).with_straight_caps(&cylinder, 20.0);
+    /// let field = GuidanceField::around_axis(&cylinder).with_straight_caps(&cylinder, 20.0, 20.0);
     /// // On the top 10 mm from the axis, the circle (1/10 mm⁻¹) turns too
     /// // tightly: the row runs along x, not round (along y there).
     /// let middle = cylinder.closest_point([10.0, 0.0, 60.0]).face;
@@ -193,10 +193,10 @@ impl GuidanceField {
     /// // A sphere's pole has no crease round it: the rows still go round.
     /// let sphere = SurfaceMesh::new(builtin_base("sphere").unwrap()).unwrap();
     /// let near_pole = sphere.closest_point([3.0, 0.0, 60.0]).face;
-    /// let field = GuidanceField::around_axis(&sphere).with_straight_caps(&sphere, 20.0);
+    /// let field = GuidanceField::around_axis(&sphere).with_straight_caps(&sphere, 20.0, 20.0);
     /// assert!(!field.on_cap(near_pole) && field.direction(near_pole).y.abs() > 0.9);
     /// ```
-    pub fn with_straight_caps(mut self, surface: &SurfaceMesh, turn_radius_mm: f64) -> Self {
+    pub fn with_straight_caps(mut self, surface: &SurfaceMesh, turn_radius_mm: f64, least_across_mm: f64) -> Self {
         let triangles = surface.triangles();
         if !self.about_axis || self.directions.len() != triangles.len() {
             return self;
@@ -235,8 +235,10 @@ impl GuidanceField {
                     }
                 }
             }
-            // A cap narrower than that holds few whole elements, and rows
-            // round it, wrapped over its rim, cover it better.
+            // A cap narrower than the caller's least width (the swatch's,
+            // for a swatch whose rows wrap over a rim) holds few whole
+            // elements, and rows round it, wrapped over its rim, cover it
+            // better.
             let across = Rect::from_points(
                 component
                     .iter()
@@ -244,7 +246,7 @@ impl GuidanceField {
                     .map(|v| surface.positions()[v as usize].truncate()),
             )
             .map_or(0.0, |extent| extent.size().min_element());
-            if creased && across >= turn_radius_mm {
+            if creased && across >= least_across_mm {
                 for f in component {
                     cap[f as usize] = true;
                 }
