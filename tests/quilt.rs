@@ -104,7 +104,10 @@ fn bad_input_fails_with_one_line_and_no_file() {
     let stl = dir.join("out.stl");
     let bad_field = dir.join("field.txt");
     std::fs::write(&bad_field, "# one stroke, one point short\n30,0,5; 30,0\n").unwrap();
-    let cases: [(&[&str], &str); 13] = [
+    // A model a millimetre across: no element fits on it.
+    let speck = dir.join("speck.obj");
+    std::fs::write(&speck, "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n").unwrap();
+    let cases: [(&[&str], &str); 14] = [
         (&["--swatch", "lace", "--base", "plane:40x40"], "no mesh file or built-in swatch"),
         (&["--swatch", "weave", "--base", "plane:40"], "not a base"),
         (&["--swatch", "weave", "--base", "plane:40x40", "--scale", "0"], "scale"),
@@ -118,6 +121,7 @@ fn bad_input_fails_with_one_line_and_no_file() {
         (&["--swatch", "weave", "--base", "vase", "--field", &path(&bad_field)], "line 2"),
         (&["--swatch", "weave", "--base", "vase", "--direction", "curves"], "give a field file"),
         (&["--swatch", "weave", "--base", "vase", "--direction", "up", "--field", &path(&bad_field)], "leave out"),
+        (&["--swatch", "rivets", "--base", &path(&speck)], "no element of the swatch stays on the model"),
     ];
     for (args, expected) in cases {
         let out = tracery().arg("quilt").args(args).arg("--stl").arg(&stl).output().unwrap();

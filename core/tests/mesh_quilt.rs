@@ -6,7 +6,9 @@
 mod quilt_support;
 
 use glam::DVec3;
-use quilt_support::{bare_share_of_faces, closed, cross, crosses_itself, crossing_pairs, turned, woven_round};
+use quilt_support::{
+    bare_share_of_faces, closed, cross, crosses_itself, crossing_pairs, turned, woven_round, woven_round_seeded,
+};
 use tracery_core::control::Control;
 use tracery_core::mesh::Mesh;
 use tracery_core::mesh_quilt::{
@@ -338,21 +340,30 @@ fn woven_threads_leave_few_holes_round_a_bellied_base() {
 /// two went unstitched. Measured by how far round the axis each row runs,
 /// in swatch widths at its own radius, not by what merging counted: the
 /// median row ran 1.25 swatches (1.25 to 1.61 over seeds 1 to 5) before
-/// the overlapping part gave way, 1.74 after (1.53 to 1.74).
+/// the overlapping part gave way, 1.74 after (1.53 to 1.74). One seed's
+/// median moves by half a swatch with any change to the order patches are
+/// laid in (splitting the caps' long faces took seed 1's from 1.73 to 1.31
+/// and seed 3's from 1.56 to 2.12), so the rows of seeds 1 to 3 are
+/// pooled: 1.80 before the caps were split, 1.66 since.
 #[test]
 fn woven_rows_run_on_round_a_bellied_base() {
     let base = turned(&[(8.0, 0.0), (12.0, 7.0), (12.0, 13.0), (7.0, 20.0), (7.0, 24.0), (0.0, 24.0)]);
-    let (swatch, quilt) = woven_round(&base);
-    let mut rows: Vec<f64> = quilt
-        .elements
-        .iter()
-        .filter(|e| e.vertices.iter().all(|v| v.z > 2.0 && v.z < 20.0))
-        .filter(|e| e.bounds().1.z - e.bounds().0.z < 0.5 * swatch.size_mm().y)
-        .map(|e| {
-            let radius_mm = e.vertices.iter().map(|v| v.truncate().length()).sum::<f64>() / e.vertices.len() as f64;
-            turn_round_axis(e) * radius_mm / swatch.size_mm().x
-        })
-        .collect();
+    let mut rows: Vec<f64> = Vec::new();
+    for seed in 1..=3 {
+        let (swatch, quilt) = woven_round_seeded(&base, seed);
+        rows.extend(
+            quilt
+                .elements
+                .iter()
+                .filter(|e| e.vertices.iter().all(|v| v.z > 2.0 && v.z < 20.0))
+                .filter(|e| e.bounds().1.z - e.bounds().0.z < 0.5 * swatch.size_mm().y)
+                .map(|e| {
+                    let radius_mm =
+                        e.vertices.iter().map(|v| v.truncate().length()).sum::<f64>() / e.vertices.len() as f64;
+                    turn_round_axis(e) * radius_mm / swatch.size_mm().x
+                }),
+        );
+    }
     rows.sort_by(f64::total_cmp);
     let median = rows[rows.len() / 2];
     assert!(median > 1.45, "the median of {} rows runs {median:.2} swatches round the base", rows.len());

@@ -20,7 +20,7 @@ pub use boundary::boundary_loops;
 pub(crate) use extrude::checked_thickness;
 pub use extrude::{MeshError, compact, extrude, triangulate_fine};
 pub use import::{ImportError, MAX_IMPORTED_TRIANGLES, read_mesh_file, read_obj, read_stl};
-pub use refine::split_edges;
+pub use refine::{split_edges, split_edges_tracked};
 pub use rings::vertex_rings;
 pub use sanity::MeshDefect;
 pub use short_edges::{MIN_EDGE_MM, collapse_short_edges};

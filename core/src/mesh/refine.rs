@@ -36,7 +36,30 @@ const MAX_ROUNDS: usize = 24;
 /// assert!(fine.triangles.iter().all(|t| (0..3).all(|k| distance(fine.vertices[t[k] as usize], fine.vertices[t[(k + 1) % 3] as usize]) <= 2.0)));
 /// ```
 pub fn split_edges(mesh: &Mesh, too_coarse: impl Fn([f64; 3], [f64; 3]) -> bool) -> Mesh {
+    split_edges_tracked(mesh, too_coarse).0
+}
+
+/// [`split_edges`], with each new triangle's triangle in `mesh` (its
+/// index), so that what the caller keeps per triangle carries over.
+///
+/// ```
+/// use tracery_core::mesh::{Mesh, split_edges_tracked};
+/// let two = Mesh {
+///     vertices: vec![[0.0, 0.0, 0.0], [8.0, 0.0, 0.0], [8.0, 8.0, 0.0], [0.0, 8.0, 0.0]],
+///     triangles: vec![[0, 1, 2], [0, 2, 3]],
+/// };
+/// let (fine, parents) = split_edges_tracked(&two, |a, b| (a[0] - b[0]).hypot(a[1] - b[1]) > 5.0);
+/// assert_eq!(parents.len(), fine.triangles.len());
+/// // Each new triangle lies inside the one it came from: the first
+/// // triangle is under the diagonal (x ≥ y), the second above it.
+/// for (t, &parent) in fine.triangles.iter().zip(&parents) {
+///     let centre = t.map(|v| fine.vertices[v as usize]).iter().fold([0.0; 2], |c, p| [c[0] + p[0] / 3.0, c[1] + p[1] / 3.0]);
+///     assert_eq!(parent == 0, centre[0] > centre[1]);
+/// }
+/// ```
+pub fn split_edges_tracked(mesh: &Mesh, too_coarse: impl Fn([f64; 3], [f64; 3]) -> bool) -> (Mesh, Vec<u32>) {
     let mut out = mesh.clone();
+    let mut parents: Vec<u32> = (0..mesh.triangles.len() as u32).collect();
     let mut fine_enough: HashSet<(u32, u32)> = HashSet::new();
     for _ in 0..MAX_ROUNDS {
         // The new vertex of every edge that is too long, by its ends in order.
@@ -62,12 +85,15 @@ pub fn split_edges(mesh: &Mesh, too_coarse: impl Fn([f64; 3], [f64; 3]) -> bool)
         }
         let middle = |a: u32, b: u32| midpoints.get(&(a.min(b), a.max(b))).copied();
         let mut triangles = Vec::with_capacity(out.triangles.len() * 2);
-        for &[a, b, c] in &out.triangles {
+        let mut new_parents = Vec::with_capacity(out.triangles.len() * 2);
+        for (&[a, b, c], &parent) in out.triangles.iter().zip(&parents) {
             split_triangle([a, b, c], [middle(a, b), middle(b, c), middle(c, a)], &mut triangles);
+            new_parents.resize(triangles.len(), parent);
         }
         out.triangles = triangles;
+        parents = new_parents;
     }
-    out
+    (out, parents)
 }
 
 /// Splits triangle `[a, b, c]` at the midpoints it has (`m[0]` on `ab`,

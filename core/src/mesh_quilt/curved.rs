@@ -34,6 +34,15 @@ use crate::surface::{SurfaceMesh, SurfacePoint};
 /// given up and left bare.
 const PATCH_TRIES: usize = 6;
 
+/// A model's faces are split until no edge is longer than this many grid
+/// cells: about as fine as the built-in models are for a swatch at scale 1
+/// (their edges are at most 2.1 mm; a cell is 2.1 to 3.9 mm).
+const MAX_FACE_EDGE_CELLS: f64 = 2.0;
+
+/// The width of the strip of faces along a crease sharper than
+/// [`MAX_FOLD_DEG`] over which the shell fans out, mm.
+const CREASE_STRIP_MM: f64 = 2.0;
+
 /// How much smaller each try's patch is.
 const PATCH_SHRINK: f64 = 0.7;
 
@@ -166,6 +175,26 @@ pub fn quilt_surface(
         )));
     }
     let size = swatch.size_mm();
+    let cell_mm = size.x.min(size.y) / settings.cells_across as f64;
+    // A model drawn in CAD has few, long faces (a box has 12). Patches grow
+    // face by face, and a patch claims the faces whose middle its cells
+    // cover, so on faces many cells wide chain mail came out as a tangle
+    // and a flat sheet of two faces as two blocks. Such faces are split
+    // first; the built-in models' faces are smaller and left as they are.
+    let split = surface.split_to(MAX_FACE_EDGE_CELLS * cell_mm);
+    let (surface, field) = match &split {
+        Some((fine, parents)) => (fine, field.on_split_faces(parents)),
+        None => (surface, field.clone()),
+    };
+    // The shell fans out over the faces that touch a crease (its offset
+    // directions are one per vertex), and bent the elements there: chain
+    // mail's rings by a box's edge came out as hearts. Those faces are
+    // split into a narrow strip.
+    let creased = surface.split_along_creases(MAX_FOLD_DEG, CREASE_STRIP_MM);
+    let (surface, field) = match &creased {
+        Some((fine, parents)) => (fine, field.on_split_faces(parents)),
+        None => (surface, field),
+    };
     // Which of the swatch's elements may bend round a crease: threads at
     // least half as long as the swatch's shorter side.
     let bends: Vec<bool> = swatch
@@ -194,14 +223,13 @@ pub fn quilt_surface(
     // heap of rings.
     let turn_radius_mm = size.x.hypot(size.y);
     let least_across_mm = if interlocked { 0.0 } else { turn_radius_mm };
-    let field = &field.clone().with_straight_caps(surface, turn_radius_mm, least_across_mm);
+    let field = &field.with_straight_caps(surface, turn_radius_mm, least_across_mm);
     let triangles = surface.triangles();
     let area_mm2: f64 = triangles.iter().map(|t| triangle_area_3d(t.map(|v| surface.positions()[v as usize]))).sum();
     let estimate = (swatch.triangle_count() as f64 * area_mm2 / (size.x * size.y)) as usize;
     if estimate > MAX_QUILT_TRIANGLES {
         return Err(QuiltError::OutputTooLarge { triangles: estimate, max: MAX_QUILT_TRIANGLES });
     }
-    let cell_mm = size.x.min(size.y) / settings.cells_across as f64;
     let input = Input::new(swatch, cell_mm);
     let reach = reach_mm(swatch);
     let graph = FaceGraph::new(surface);

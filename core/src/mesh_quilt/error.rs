@@ -64,6 +64,11 @@ pub enum QuiltError {
         /// The cap.
         max: usize,
     },
+    /// Every element laid was left out again: the print would be empty.
+    #[error(
+        "no element of the swatch stays on the model ({0}); try a smaller scale, or check that the model's faces look outward"
+    )]
+    NothingPlaced(String),
     /// The base spec is not one this program knows.
     #[error("'{0}' is not a base: use plane:WIDTHxHEIGHT (mm), a built-in base's name, or an STL or OBJ file")]
     BadBase(String),

@@ -261,6 +261,21 @@ impl GuidanceField {
         self
     }
 
+    /// The field on a surface split from this one's
+    /// ([`SurfaceMesh::split_to`]): each new face, lying in the plane of
+    /// the face it came from (`parents`), takes that face's direction.
+    pub fn on_split_faces(&self, parents: &[u32]) -> GuidanceField {
+        GuidanceField {
+            directions: parents.iter().map(|&p| self.directions[p as usize]).collect(),
+            about_axis: self.about_axis,
+            caps: if self.caps.is_empty() {
+                Vec::new()
+            } else {
+                parents.iter().map(|&p| self.caps[p as usize]).collect()
+            },
+        }
+    }
+
     /// Whether face `f` lies on a straight cap
     /// ([`GuidanceField::with_straight_caps`]). Across a cap's edge the
     /// field jumps, so a patch keeps to the seed's side of it.

@@ -8,10 +8,48 @@ use glam::DVec3;
 
 use super::Element;
 use crate::mesh::{BooleanError, Mesh, difference_solids, is_boolean_solid};
+use crate::surface::SurfaceMesh;
 
 /// How far below the floor a vertex must reach before its element is cut,
 /// mm: rounding in the shell map leaves vertices a hair below it.
 pub const FLOOR_TOLERANCE_MM: f64 = 1e-6;
+
+/// The model may stand on a face whose normal's `z` is below this (the
+/// face turned more than about 25° from looking straight up): a flat
+/// bottom, a wall (an open tube's rim), an open cone's rim (0.29) stand; a
+/// sheet or dish lying on its back, looking up, does not.
+const STANDS_NORMAL_Z: f64 = 0.9;
+
+/// The height of the plane `surface` stands on, mm: its lowest level, where
+/// a face there does not look up ([`STANDS_NORMAL_Z`]). `None` where every
+/// face at the lowest level looks up, as an open sheet lying on its back does (a relief, a
+/// dish): its textured side faces up, and the elements sunk into it reach
+/// below its lowest level, so a cut there took away every element's
+/// footing and a flat sheet came out bare. A closed model's lowest faces
+/// always look down or sideways, so it always has a floor.
+///
+/// ```
+/// use tracery_core::mesh::Mesh;
+/// use tracery_core::mesh_quilt::floor_of;
+/// use tracery_core::surface::{SurfaceMesh, builtin_base};
+/// let cylinder = SurfaceMesh::new(builtin_base("cylinder").unwrap()).unwrap();
+/// assert_eq!(floor_of(&cylinder), Some(0.0));
+/// // A sheet 60 mm square on the bed, looking up.
+/// let sheet = Mesh {
+///     vertices: vec![[0.0, 0.0, 0.0], [60.0, 0.0, 0.0], [60.0, 60.0, 0.0], [0.0, 60.0, 0.0]],
+///     triangles: vec![[0, 1, 2], [0, 2, 3]],
+/// };
+/// assert_eq!(floor_of(&SurfaceMesh::new(sheet).unwrap()), None);
+/// ```
+pub fn floor_of(surface: &SurfaceMesh) -> Option<f64> {
+    let positions = surface.positions();
+    let lowest_mm = positions.iter().map(|p| p.z).fold(f64::INFINITY, f64::min);
+    let at_floor = |t: &[u32; 3]| t.iter().any(|&v| positions[v as usize].z <= lowest_mm + FLOOR_TOLERANCE_MM);
+    let stands = (0..surface.triangles().len() as u32)
+        .filter(|&f| at_floor(&surface.triangles()[f as usize]))
+        .any(|f| surface.face_normal(f).z < STANDS_NORMAL_Z);
+    stands.then_some(lowest_mm)
+}
 
 /// What [`trim_below`] did.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]

@@ -42,7 +42,7 @@ pub use error::QuiltError;
 pub use faces::{Closest, Faces};
 pub use field::{CAP_FACING_DEG, CAP_SMOOTH_DEG, GuidanceField, MAX_FIELD_POINTS, parse_strokes};
 pub use flat_cap::{FLAT_CAP_DEG, FLAT_CAP_TOLERANCE_MM, RIM_INSET_MM};
-pub use foot::{FLOOR_TOLERANCE_MM, Trimmed, trim_below};
+pub use foot::{FLOOR_TOLERANCE_MM, Trimmed, floor_of, trim_below};
 pub use merge::MergeCounts;
 pub use patch::MAX_AREA_DISTORTION;
 pub use planar::{MAX_QUILT_TRIANGLES, Quilt, QuiltCounts, quilt_plane};

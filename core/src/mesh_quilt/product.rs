@@ -4,8 +4,8 @@
 use super::matching::reach_mm;
 use super::resting::{keep_held, rests_on};
 use super::{
-    Element, GuidanceField, Quilt, QuiltError, Settings, Swatch, crosses_itself, quilt_plane, quilt_surface,
-    trim_below, trim_to_area,
+    Element, GuidanceField, Quilt, QuiltError, Settings, Swatch, Trimmed, crosses_itself, floor_of, quilt_plane,
+    quilt_surface, trim_below, trim_to_area,
 };
 use crate::control::Control;
 use crate::mesh::Mesh;
@@ -90,7 +90,6 @@ pub fn make_surface_product(
     let mut product = Product::default();
     let swatch = swatch.scaled(settings.scale);
     let mut quilt = product.timings.time("quilt", || quilt_surface(&swatch, surface, field, settings, control))?;
-    let floor_z_mm = surface.positions().iter().map(|p| p.z).fold(f64::INFINITY, f64::min);
     // A piece left by the cut is kept where it still rests on the model:
     // sunk into it at least half the sink (a piece only grazing the foot's
     // edge would print loose), or touching it when nothing sinks.
@@ -100,7 +99,10 @@ pub fn make_surface_product(
     // turns tightly (a vase's neck). Such an element prints wrong, and a
     // boolean's result made from it can come out pinched. It is left out
     // (after the floor's cut, which takes some such bottoms off).
-    let trimmed = product.timings.time("floor", || trim_below(&mut quilt.elements, floor_z_mm, rests))?;
+    let trimmed = match floor_of(surface) {
+        Some(floor_z_mm) => product.timings.time("floor", || trim_below(&mut quilt.elements, floor_z_mm, rests))?,
+        None => Trimmed::default(),
+    };
     let before = quilt.elements.len();
     product.timings.time("self-crossing", || quilt.elements.retain(|e| !crosses_itself(e)));
     let bent = before - quilt.elements.len();
@@ -110,6 +112,17 @@ pub fn make_surface_product(
     let floating = product.timings.time("floating", || {
         keep_held(&mut quilt.elements, surface, &swatch, settings.sink_mm, rest_depth_mm, hold_mm)
     });
+    if quilt.elements.is_empty() {
+        return Err(QuiltError::NothingPlaced(format!(
+            "{} laid, {} left out crossing others, {} removed below where it stands, {} bent through \
+             themselves, {} resting nowhere on it",
+            quilt.counts.merges.added + quilt.counts.merges.replaced + quilt.counts.merges.kept,
+            quilt.counts.merges.collided,
+            trimmed.removed + trimmed.crumbs,
+            bent,
+            floating,
+        )));
+    }
     // Those that crossed themselves were just left out.
     describe(&mut product, &quilt, &swatch, 0);
     product.facts.push("left_out_self_crossing", Fact::Count(bent));

@@ -22,6 +22,7 @@ mod hollow;
 mod ring_domain;
 mod shade;
 mod sheet;
+mod split_faces;
 mod surface_mesh;
 mod trace;
 

@@ -150,10 +150,16 @@ pub fn turned(corners: &[(f64, f64)]) -> SurfaceMesh {
 /// The weave at half size laid round `base` along its parallels, each
 /// element checked closed and none crossing another; with the swatch.
 pub fn woven_round(base: &SurfaceMesh) -> (Swatch, Quilt) {
+    woven_round_seeded(base, Settings::default().seed)
+}
+
+/// [`woven_round`] with the random choices of `seed`.
+pub fn woven_round_seeded(base: &SurfaceMesh, seed: u64) -> (Swatch, Quilt) {
     let swatch = builtin_swatch("weave").unwrap().scaled(0.5);
+    let mut settings = Settings::default();
+    settings.seed = seed;
     let quilt =
-        quilt_surface(&swatch, base, &GuidanceField::around_axis(base), &Settings::default(), &Control::default())
-            .unwrap();
+        quilt_surface(&swatch, base, &GuidanceField::around_axis(base), &settings, &Control::default()).unwrap();
     assert!(quilt.elements.iter().all(closed));
     assert_eq!(crossing_pairs(&quilt.elements), 0);
     (swatch, quilt)
