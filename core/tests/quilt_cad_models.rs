@@ -3,36 +3,14 @@
 //! the product's mesh, split into bodies here, apart from the code under
 //! test.
 
+mod quilt_support;
+
 use glam::DVec3;
+use quilt_support::bodies;
 use tracery_core::control::Control;
 use tracery_core::mesh::Mesh;
 use tracery_core::mesh_quilt::{GuidanceField, Settings, builtin_swatch, make_surface_product};
 use tracery_core::surface::SurfaceMesh;
-
-/// The mesh's bodies (triangles joined through shared corners), each as
-/// its vertices.
-fn bodies(mesh: &Mesh) -> Vec<Vec<DVec3>> {
-    let mut parent: Vec<usize> = (0..mesh.vertices.len()).collect();
-    fn root(parent: &mut [usize], mut v: usize) -> usize {
-        while parent[v] != v {
-            parent[v] = parent[parent[v]];
-            v = parent[v];
-        }
-        v
-    }
-    for t in &mesh.triangles {
-        for k in 1..3 {
-            let (a, b) = (root(&mut parent, t[0] as usize), root(&mut parent, t[k] as usize));
-            parent[a] = b;
-        }
-    }
-    let mut by_root: std::collections::BTreeMap<usize, Vec<DVec3>> = Default::default();
-    for v in mesh.triangles.iter().flatten().map(|&v| v as usize).collect::<std::collections::BTreeSet<_>>() {
-        let r = root(&mut parent, v);
-        by_root.entry(r).or_default().push(DVec3::from_array(mesh.vertices[v]));
-    }
-    by_root.into_values().collect()
-}
 
 /// Chain mail quilted over `mesh` round the `z` axis, as printed.
 fn chain_mail_over(mesh: Mesh) -> Mesh {

@@ -6,37 +6,11 @@
 mod quilt_support;
 
 use glam::DVec3;
-use quilt_support::turned;
+use quilt_support::{bodies, turned};
 use tracery_core::control::Control;
 use tracery_core::mesh::Mesh;
 use tracery_core::mesh_quilt::{GuidanceField, Settings, Swatch, builtin_swatch, make_surface_product};
 use tracery_core::surface::{SurfaceMesh, builtin_base};
-
-/// The mesh's bodies (triangles joined through shared corners), each as
-/// its vertices.
-fn bodies(mesh: &Mesh) -> Vec<Vec<DVec3>> {
-    let mut parent: Vec<usize> = (0..mesh.vertices.len()).collect();
-    fn root(parent: &mut [usize], mut v: usize) -> usize {
-        while parent[v] != v {
-            parent[v] = parent[parent[v]];
-            v = parent[v];
-        }
-        v
-    }
-    for t in &mesh.triangles {
-        for k in 1..3 {
-            let (a, b) = (root(&mut parent, t[0] as usize), root(&mut parent, t[k] as usize));
-            parent[a] = b;
-        }
-    }
-    let used: std::collections::BTreeSet<usize> = mesh.triangles.iter().flatten().map(|&v| v as usize).collect();
-    let mut by_root: std::collections::BTreeMap<usize, Vec<DVec3>> = Default::default();
-    for v in used {
-        let r = root(&mut parent, v);
-        by_root.entry(r).or_default().push(DVec3::from_array(mesh.vertices[v]));
-    }
-    by_root.into_values().collect()
-}
 
 /// `swatch` quilted over `base` along its parallels with `settings`, as
 /// printed: the product's mesh.

@@ -1,6 +1,7 @@
 //! Helpers shared by the quilting tests, each written here apart from the
 //! code under test: closedness by counting directed edges, crossings by a
-//! segment–triangle test, bases turned about `z`, and bare area.
+//! segment–triangle test, bases turned about `z`, bare area, and a mesh
+//! split into its bodies.
 
 // Each test file uses some of these.
 #![allow(dead_code)]
@@ -208,4 +209,30 @@ pub fn bare_share_where(
         }
     }
     bare / all
+}
+
+/// The mesh's bodies (triangles joined through shared corners), each as
+/// its vertices.
+pub fn bodies(mesh: &Mesh) -> Vec<Vec<DVec3>> {
+    let mut parent: Vec<usize> = (0..mesh.vertices.len()).collect();
+    fn root(parent: &mut [usize], mut v: usize) -> usize {
+        while parent[v] != v {
+            parent[v] = parent[parent[v]];
+            v = parent[v];
+        }
+        v
+    }
+    for t in &mesh.triangles {
+        for k in 1..3 {
+            let (a, b) = (root(&mut parent, t[0] as usize), root(&mut parent, t[k] as usize));
+            parent[a] = b;
+        }
+    }
+    let used: std::collections::BTreeSet<usize> = mesh.triangles.iter().flatten().map(|&v| v as usize).collect();
+    let mut by_root: std::collections::BTreeMap<usize, Vec<DVec3>> = Default::default();
+    for v in used {
+        let r = root(&mut parent, v);
+        by_root.entry(r).or_default().push(DVec3::from_array(mesh.vertices[v]));
+    }
+    by_root.into_values().collect()
 }
