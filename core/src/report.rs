@@ -124,6 +124,14 @@ pub enum Warning {
         /// The thinnest wall asked, mm.
         thinnest_mm: f64,
     },
+    /// A quilt leaves much more of its model bare than its swatch leaves
+    /// of a plane: the swatch is large for the model's curves.
+    QuiltSparse {
+        /// The model's area left bare, percent.
+        bare_percent: f64,
+        /// The swatch's own area left bare, percent.
+        swatch_bare_percent: f64,
+    },
 }
 
 impl std::fmt::Display for Warning {
@@ -192,6 +200,10 @@ impl std::fmt::Display for Warning {
             Warning::CarvedApart { bodies } => write!(
                 f,
                 "carving the pattern out leaves the shell in {bodies} separate pieces: each hole of the pattern cuts one loose, and a ring all round the model cuts it in two; for one piece, carve a pattern with no holes (--holes 0) along an open curve"
+            ),
+            Warning::QuiltSparse { bare_percent, swatch_bare_percent } => write!(
+                f,
+                "{bare_percent:.0} % of the model is left bare, where the swatch leaves {swatch_bare_percent:.0} % of a plane bare: the swatch is large for the model's curves; try a smaller scale"
             ),
             Warning::CarveWallsDiffer { shell_mm, thinnest_mm } => write!(
                 f,

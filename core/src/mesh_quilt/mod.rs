@@ -6,6 +6,7 @@
 //! ([`min_cut_keep`]) and stitching ([`quilt_plane`]).
 
 mod builtin;
+mod coverage;
 mod curved;
 mod cut;
 mod deform;
@@ -33,6 +34,7 @@ mod tear;
 mod zones;
 
 pub use builtin::{SWATCH_NAMES, builtin_swatch};
+pub use coverage::{bare_share, swatch_bare_share};
 pub use curved::{ShellReport, quilt_surface};
 pub use cut::{FORCED, min_cut_keep};
 pub use deform::{Constraint, deform};

@@ -4,17 +4,22 @@
 use super::matching::reach_mm;
 use super::resting::{keep_held, rests_on};
 use super::{
-    Element, GuidanceField, Quilt, QuiltError, Settings, Swatch, Trimmed, crosses_itself, floor_of, quilt_plane,
-    quilt_surface, trim_below, trim_to_area,
+    Element, GuidanceField, Quilt, QuiltError, Settings, Swatch, Trimmed, bare_share, crosses_itself, floor_of,
+    quilt_plane, quilt_surface, swatch_bare_share, trim_below, trim_to_area,
 };
 use crate::control::Control;
 use crate::mesh::Mesh;
 use crate::product::{Fact, Product};
+use crate::report::Warning;
 use crate::surface::{PartRole, SurfaceMesh, assemble_products};
 
 /// How near the model a piece cut at the floor must come to count as
 /// resting on it when nothing sinks, mm.
 const TOUCH_TOLERANCE_MM: f64 = 0.05;
+
+/// A quilt is sparse, and says so, when it leaves more of its model bare
+/// than the swatch leaves of a plane by this share of the area.
+const SPARSE_MARGIN: f64 = 0.2;
 
 /// What the quilt covers.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -125,6 +130,18 @@ pub fn make_surface_product(
     }
     // Those that crossed themselves were just left out.
     describe(&mut product, &quilt, &swatch, 0);
+    // Measured within half a grid cell: how much of the model the texture
+    // leaves bare, against how much the swatch leaves bare by design.
+    let reach_mm = 0.5 * swatch.size_mm().truncate().min_element() / settings.cells_across as f64;
+    let bare = product.timings.time("coverage", || bare_share(surface, &quilt.elements, reach_mm));
+    let swatch_bare = swatch_bare_share(&swatch, settings.sink_mm, reach_mm);
+    product.facts.push("bare_share", Fact::Number(bare));
+    product.facts.push("swatch_bare_share", Fact::Number(swatch_bare));
+    if bare > swatch_bare + SPARSE_MARGIN {
+        product
+            .warnings
+            .push(Warning::QuiltSparse { bare_percent: 100.0 * bare, swatch_bare_percent: 100.0 * swatch_bare });
+    }
     product.facts.push("left_out_self_crossing", Fact::Count(bent));
     product.facts.push("left_out_floating", Fact::Count(floating));
     product.facts.push("cut_at_floor", Fact::Count(trimmed.cut));
