@@ -35,8 +35,9 @@ use crate::surface::{SurfaceMesh, SurfacePoint};
 const PATCH_TRIES: usize = 6;
 
 /// A model's faces are split until no edge is longer than this many grid
-/// cells: about as fine as the built-in models are for a swatch at scale 1
-/// (their edges are at most 2.1 mm; a cell is 2.1 to 3.9 mm).
+/// cells: no finer than the built-in models are for a swatch at scale 1
+/// (their edges are at most 2.1 mm; a cell is 2.1 to 3.3 mm), so they are
+/// left as they are.
 const MAX_FACE_EDGE_CELLS: f64 = 2.0;
 
 /// The width of the strip of faces along a crease sharper than
@@ -175,6 +176,12 @@ pub fn quilt_surface(
         )));
     }
     let size = swatch.size_mm();
+    let area_mm2: f64 =
+        surface.triangles().iter().map(|t| triangle_area_3d(t.map(|v| surface.positions()[v as usize]))).sum();
+    let estimate = (swatch.triangle_count() as f64 * area_mm2 / (size.x * size.y)) as usize;
+    if estimate > MAX_QUILT_TRIANGLES {
+        return Err(QuiltError::OutputTooLarge { triangles: estimate, max: MAX_QUILT_TRIANGLES });
+    }
     let cell_mm = size.x.min(size.y) / settings.cells_across as f64;
     // A model drawn in CAD has few, long faces (a box has 12). Patches grow
     // face by face, and a patch claims the faces whose middle its cells
@@ -225,11 +232,6 @@ pub fn quilt_surface(
     let least_across_mm = if interlocked { 0.0 } else { turn_radius_mm };
     let field = &field.with_straight_caps(surface, turn_radius_mm, least_across_mm);
     let triangles = surface.triangles();
-    let area_mm2: f64 = triangles.iter().map(|t| triangle_area_3d(t.map(|v| surface.positions()[v as usize]))).sum();
-    let estimate = (swatch.triangle_count() as f64 * area_mm2 / (size.x * size.y)) as usize;
-    if estimate > MAX_QUILT_TRIANGLES {
-        return Err(QuiltError::OutputTooLarge { triangles: estimate, max: MAX_QUILT_TRIANGLES });
-    }
     let input = Input::new(swatch, cell_mm);
     let reach = reach_mm(swatch);
     let graph = FaceGraph::new(surface);
