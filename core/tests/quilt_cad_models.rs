@@ -9,8 +9,32 @@ use glam::DVec3;
 use quilt_support::bodies;
 use tracery_core::control::Control;
 use tracery_core::mesh::Mesh;
-use tracery_core::mesh_quilt::{GuidanceField, Settings, builtin_swatch, make_surface_product};
+use tracery_core::mesh_quilt::{GuidanceField, Settings, builtin_swatch, make_surface_product, unite_with_base};
 use tracery_core::surface::SurfaceMesh;
+
+/// A box `side_mm` on a side as 12 triangles looking out, its corner at
+/// the origin.
+fn box_of(side_mm: f64) -> Mesh {
+    let corners =
+        (0..8).map(|k| [side_mm * (k & 1) as f64, side_mm * ((k >> 1) & 1) as f64, side_mm * (k >> 2) as f64]);
+    Mesh {
+        vertices: corners.collect(),
+        triangles: vec![
+            [0, 2, 3],
+            [0, 3, 1],
+            [4, 5, 7],
+            [4, 7, 6],
+            [0, 1, 5],
+            [0, 5, 4],
+            [2, 6, 7],
+            [2, 7, 3],
+            [0, 4, 6],
+            [0, 6, 2],
+            [1, 3, 7],
+            [1, 7, 5],
+        ],
+    }
+}
 
 /// Chain mail quilted over `mesh` round the `z` axis, as printed.
 fn chain_mail_over(mesh: Mesh) -> Mesh {
@@ -63,24 +87,7 @@ fn chain_mail_over_a_plate_of_two_triangles_covers_it() {
 /// those split into a 2 mm strip as well, 32 of 32.
 #[test]
 fn chain_mail_over_a_box_of_twelve_triangles_is_a_lattice() {
-    let corners = (0..8).map(|k| [60.0 * (k & 1) as f64, 60.0 * ((k >> 1) & 1) as f64, 60.0 * (k >> 2) as f64]);
-    let box_mesh = Mesh {
-        vertices: corners.collect(),
-        triangles: vec![
-            [0, 2, 3],
-            [0, 3, 1],
-            [4, 5, 7],
-            [4, 7, 6],
-            [0, 1, 5],
-            [0, 5, 4],
-            [2, 6, 7],
-            [2, 7, 3],
-            [0, 4, 6],
-            [0, 6, 2],
-            [1, 3, 7],
-            [1, 7, 5],
-        ],
-    };
+    let box_mesh = box_of(60.0);
     let depth_mm = builtin_swatch("chainmail").unwrap().size_mm().z;
     let centre = |b: &[DVec3]| b.iter().copied().sum::<DVec3>() / b.len() as f64;
     // Bodies standing out of the front (y = 0).
@@ -106,4 +113,33 @@ fn chain_mail_over_a_box_of_twelve_triangles_is_a_lattice() {
     println!("{linked} of {} standing links over the front's middle through two flat rings", standing.len());
     assert!(standing.len() >= 5, "{} standing links over the front's middle", standing.len());
     assert!(linked as f64 >= 0.8 * standing.len() as f64, "{linked} of {} pass through two flat rings", standing.len());
+}
+
+/// Some programs write a closed model with every face looking in. Rivets
+/// on such a box were grown inside it, and united with it came out as 97
+/// loose bodies and no box. The model is now turned outward when loaded:
+/// one body, whose volume is the box's and more (counted on the mesh
+/// here).
+#[test]
+fn rivets_on_a_box_written_inside_out_print_as_one_body_with_it() {
+    let mut inside_out = box_of(40.0);
+    for t in &mut inside_out.triangles {
+        t.swap(1, 2);
+    }
+    let base = SurfaceMesh::new(inside_out).unwrap();
+    let swatch = builtin_swatch("rivets").unwrap();
+    let field = GuidanceField::around_axis(&base);
+    let texture = make_surface_product(&swatch, &base, &field, &Settings::default(), &Control::default()).unwrap();
+    let object = unite_with_base(texture, &base).unwrap();
+    let mesh = object.mesh_mm.unwrap();
+    let volume_mm3: f64 = mesh
+        .triangles
+        .iter()
+        .map(|t| {
+            let [a, b, c] = t.map(|v| DVec3::from_array(mesh.vertices[v as usize]));
+            a.dot(b.cross(c)) / 6.0
+        })
+        .sum();
+    assert_eq!(bodies(&mesh).len(), 1);
+    assert!(volume_mm3 > 40.0 * 40.0 * 40.0, "{volume_mm3:.0} mm³");
 }

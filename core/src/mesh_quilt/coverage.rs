@@ -13,6 +13,9 @@ use crate::surface::SurfaceMesh;
 /// of the measure: a model stands on them, and they are left bare.
 const STANDING_NORMAL_Z: f64 = -0.9;
 
+/// A face is cut into at most this many rows of pieces to be measured.
+const MAX_SPLITS: f64 = 64.0;
+
 /// Points within `reach_mm` of one another share or neighbour a cell.
 struct Grid {
     reach_mm: f64,
@@ -43,8 +46,8 @@ impl Grid {
 }
 
 /// The share of `surface`'s area (but the faces looking down, which it
-/// stands on) whose faces' middles lie farther than `reach_mm` from every
-/// vertex of `elements`.
+/// stands on) farther than `reach_mm` from every vertex of `elements`,
+/// judged at the middles of pieces of each face no wider than the reach.
 ///
 /// ```
 /// use tracery_core::mesh_quilt::bare_share;
@@ -61,9 +64,25 @@ pub fn bare_share(surface: &SurfaceMesh, elements: &[Element], reach_mm: f64) ->
         }
         let [a, b, c] = t.map(|v| surface.positions()[v as usize]);
         let area = 0.5 * (b - a).cross(c - a).length();
-        total += area;
-        if !grid.reaches((a + b + c) / 3.0) {
-            bare += area;
+        // The face cut into n × n alike triangles, each judged at its
+        // middle: a model from CAD has faces far wider than the reach.
+        let longest = a.distance(b).max(b.distance(c)).max(c.distance(a));
+        let n = (longest / reach_mm).ceil().clamp(1.0, MAX_SPLITS) as usize;
+        let at = |u: f64, v: f64| a + (b - a) * (u / n as f64) + (c - a) * (v / n as f64);
+        let piece = area / (n * n) as f64;
+        for i in 0..n {
+            for j in 0..n - i {
+                let mut middles = vec![at(i as f64 + 1.0 / 3.0, j as f64 + 1.0 / 3.0)];
+                if i + j + 1 < n {
+                    middles.push(at(i as f64 + 2.0 / 3.0, j as f64 + 2.0 / 3.0));
+                }
+                for p in middles {
+                    total += piece;
+                    if !grid.reaches(p) {
+                        bare += piece;
+                    }
+                }
+            }
         }
     }
     if total > 0.0 { bare / total } else { 0.0 }

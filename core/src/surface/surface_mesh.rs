@@ -78,7 +78,8 @@ pub struct SurfaceMesh {
 impl SurfaceMesh {
     /// Checks `mesh` and builds what drawing on it needs. Triangles that
     /// collapse to a line are dropped; a surface with boundaries (an open
-    /// shell, a vase without a bottom) is taken.
+    /// shell, a vase without a bottom) is taken; a closed one whose faces
+    /// look inward is turned to look outward.
     ///
     /// ```
     /// use tracery_core::surface::{SurfaceMesh, builtin_base};
@@ -125,6 +126,13 @@ impl SurfaceMesh {
         let flipped: Vec<_> = directed.iter().filter(|(_, count)| **count > 1).map(|(e, _)| *e).collect();
         if let Some(first) = flipped.iter().min() {
             return Err(SurfaceError::Orientation { edges: flipped.len(), at_mm: at(first) });
+        }
+        // Some programs write a closed model with every face looking in. Its
+        // texture was grown inside it, and united with it came out as loose
+        // pieces with no model: such a model is turned outward. (Points on
+        // it are kept in millimetres, not by face, so nothing moves.)
+        if edge_faces.values().all(|faces| faces.len() == 2) {
+            mesh.orient_outward();
         }
         // Normals weighted by angle, so that how a flat area is cut into
         // triangles does not tilt them.
