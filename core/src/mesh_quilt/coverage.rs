@@ -6,6 +6,7 @@
 use glam::{DVec2, DVec3, IVec3};
 use rustc_hash::FxHashMap;
 
+use super::patch::triangle_area_3d;
 use super::{Element, Swatch};
 use crate::surface::SurfaceMesh;
 
@@ -63,7 +64,7 @@ pub fn bare_share(surface: &SurfaceMesh, elements: &[Element], reach_mm: f64) ->
             continue;
         }
         let [a, b, c] = t.map(|v| surface.positions()[v as usize]);
-        let area = 0.5 * (b - a).cross(c - a).length();
+        let area = triangle_area_3d([a, b, c]);
         // The face cut into n × n alike triangles, each judged at its
         // middle: a model from CAD has faces far wider than the reach.
         let longest = a.distance(b).max(b.distance(c)).max(c.distance(a));

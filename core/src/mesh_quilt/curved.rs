@@ -21,7 +21,7 @@ use super::faces::{ElementFaces, Faces};
 use super::flat_cap::{FlatCap, FlatCaps, RIM_INSET_MM};
 use super::matching::{Input, MARGIN_CELLS, Neighbourhood, Placement, best_translation, reach_mm, thin};
 use super::merge::merge_patch;
-use super::patch::{FaceGraph, Patch, triangle_area_3d};
+use super::patch::{FaceGraph, Patch};
 use super::shell::{Shell, ShellStretch};
 use super::tear::{MAX_FOLD_DEG, MAX_STRETCH_SPREAD, largest_fold_deg, stretch_spread};
 use super::zones::{Zone, Zones, boxes_overlap};
@@ -176,9 +176,7 @@ pub fn quilt_surface(
         )));
     }
     let size = swatch.size_mm();
-    let area_mm2: f64 =
-        surface.triangles().iter().map(|t| triangle_area_3d(t.map(|v| surface.positions()[v as usize]))).sum();
-    let estimate = (swatch.triangle_count() as f64 * area_mm2 / (size.x * size.y)) as usize;
+    let estimate = (swatch.triangle_count() as f64 * surface.area_mm2() / (size.x * size.y)) as usize;
     if estimate > MAX_QUILT_TRIANGLES {
         return Err(QuiltError::OutputTooLarge { triangles: estimate, max: MAX_QUILT_TRIANGLES });
     }

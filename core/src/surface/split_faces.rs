@@ -39,10 +39,7 @@ impl SurfaceMesh {
     /// assert!(fine.split_to(5.0).is_none());
     /// ```
     pub fn split_to(&self, max_edge_mm: f64) -> Option<(SurfaceMesh, Vec<u32>)> {
-        // Split at midpoints, triangles end with edges between half the
-        // limit and the limit: about 8 / limit² of them per mm².
-        let least_edge_mm = (16.0 * self.area_mm2() / MAX_BASE_TRIANGLES as f64).sqrt();
-        let max_edge_mm = max_edge_mm.max(least_edge_mm);
+        let max_edge_mm = max_edge_mm.max(self.least_split_edge_mm());
         if self.longest_edge_mm() <= max_edge_mm {
             return None;
         }
@@ -71,7 +68,7 @@ impl SurfaceMesh {
     /// assert!(fine.split_along_creases(35.0, 0.5).is_none());
     /// ```
     pub fn split_along_creases(&self, crease_deg: f64, edge_mm: f64) -> Option<(SurfaceMesh, Vec<u32>)> {
-        let edge_mm = edge_mm.max((16.0 * self.area_mm2() / MAX_BASE_TRIANGLES as f64).sqrt());
+        let edge_mm = edge_mm.max(self.least_split_edge_mm());
         let crease_cos = crease_deg.to_radians().cos();
         let mut current: Option<(SurfaceMesh, Vec<u32>)> = None;
         for _ in 0..CREASE_ROUNDS {
@@ -104,8 +101,16 @@ impl SurfaceMesh {
             .fold(0.0, f64::max)
     }
 
+    /// The shortest edge splitting may aim for, mm: split at midpoints,
+    /// triangles end with edges between half the limit and the limit, about
+    /// 8 / limit² of them per mm², and this keeps them under half
+    /// [`MAX_BASE_TRIANGLES`].
+    fn least_split_edge_mm(&self) -> f64 {
+        (16.0 * self.area_mm2() / MAX_BASE_TRIANGLES as f64).sqrt()
+    }
+
     /// The surface's area, mm².
-    fn area_mm2(&self) -> f64 {
+    pub fn area_mm2(&self) -> f64 {
         let p = self.positions();
         self.triangles()
             .iter()
