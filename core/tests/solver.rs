@@ -95,6 +95,9 @@ fn dp_equals_exhaustive_search_on_small_instances() {
                         (Target::Exactly(1), Target::Exactly(0), false),
                         (Target::Exactly(1), Target::Any, true),
                         (Target::Exactly(2), Target::Any, false),
+                        // Searched first without descriptors, leaving out
+                        // the pieces and seams a loop cannot run through.
+                        (Target::Any, Target::Any, true),
                     ] {
                         let mut options = SolveOptions::new(factor * exemplar.width());
                         options.curve = curve;
@@ -129,7 +132,7 @@ fn dp_equals_exhaustive_search_on_small_instances() {
             }
         }
     }
-    assert_eq!(compared, 8 * 2 * 2 * 2 * 5);
+    assert_eq!(compared, 8 * 2 * 2 * 2 * 6);
     assert!(solved > compared / 3, "only {solved} of {compared} instances had a solution");
 }
 
@@ -353,13 +356,23 @@ fn band_height_bounds_the_accumulated_offsets() {
 /// answers instead: the pattern must still meet every target (recounted
 /// here from the pieces' own descriptors), be marked as bounded, and cost
 /// little more than the exact answer on instances where both run.
+///
+/// The targets are ones the search follows descriptors for: with any
+/// number of parts and holes it leaves them out and needs a small fraction
+/// of the states (at most 34 k on the corpus, against a cap of 2 M), so a
+/// cap at half of those says little about the bounded search users meet.
 #[test]
 fn a_bounded_search_answers_past_the_cap_close_to_exact() {
     let (mut compared, mut worst_gap, mut total_gap) = (0, 0.0f64, 0.0);
+    let targets = [
+        (Target::Exactly(1), Target::Any),
+        (Target::Exactly(2), Target::Any),
+        (Target::Exactly(1), Target::Exactly(0)),
+    ];
     for name in BUILTIN_NAMES {
         let set = PieceSet::new(&builtin(name).unwrap(), &SliceOptions::default()).unwrap();
         for curve in [CurveKind::Open, CurveKind::Closed] {
-            for (components, holes) in [(Target::Exactly(1), Target::Any), (Target::Any, Target::Any)] {
+            for (components, holes) in targets {
                 let mut options = SolveOptions::new(60.0 * set.exemplar_width / set.len() as f64);
                 options.curve = curve;
                 options.components = components;
@@ -406,5 +419,40 @@ fn a_bounded_search_answers_past_the_cap_close_to_exact() {
     }
     eprintln!("{compared} bounded instances, mean gap {:.4}, worst {:.4}", total_gap / f64::from(compared), worst_gap);
     assert!(compared >= 6, "only {compared} instances went past the cap");
-    assert!(worst_gap < 0.25, "worst gap {worst_gap}");
+    assert!(total_gap / f64::from(compared) < 0.08, "mean gap {}", total_gap / f64::from(compared));
+    assert!(worst_gap < 0.3, "worst gap {worst_gap}");
+}
+
+/// With any number of parts and holes the search first leaves the
+/// descriptors out. On a loop that must run all around, what it finds is
+/// then checked: here the exemplar's own order, whose seams all fit, is two
+/// bars each broken once, and runs all around nowhere.
+#[test]
+fn a_loop_searched_without_descriptors_still_runs_all_around() {
+    use glam::DVec2;
+    use tracery_core::geom::{Polygon, Region};
+    let bar = |x0: f64, x1: f64, y0: f64| Polygon {
+        outer: vec![DVec2::new(x0, y0), DVec2::new(x1, y0), DVec2::new(x1, y0 + 1.0), DVec2::new(x0, y0 + 1.0)],
+        holes: vec![],
+    };
+    // The top bar broken at 2..3, the bottom one at 6..7.
+    let region = Region::new(vec![bar(0.0, 2.0, 2.0), bar(3.0, 10.0, 2.0), bar(0.0, 6.0, 0.0), bar(7.0, 10.0, 0.0)]);
+    let exemplar = Exemplar::from_region("broken bars", region).unwrap();
+    let set = PieceSet::new(&exemplar, &SliceOptions::default()).unwrap();
+    for length in [20.0, 30.0, 40.0] {
+        let mut options = SolveOptions::new(length);
+        options.curve = CurveKind::Closed;
+        options.components = Target::Any;
+        options.holes = Target::Any;
+        options.closed_pattern = true;
+        let solution = solve(&set, &options, &Control::default()).unwrap();
+        // Counted again from the pieces' own descriptors.
+        let mut d = set.pieces[solution.pieces[0]].descriptor.clone();
+        for &p in &solution.pieces[1..] {
+            d = d.join(&set.pieces[p].descriptor).unwrap();
+        }
+        let counted = d.close_loop().unwrap();
+        assert!(counted.wraps > 0, "length {length}: {:?} runs all around nowhere", solution.pieces);
+        assert_eq!(counted.wraps, solution.wraps);
+    }
 }

@@ -143,6 +143,19 @@ impl TopologyDescriptor {
         self.left.iter().chain(self.right.iter()).map(|&id| u32::from(id) + 1).max().unwrap_or(0)
     }
 
+    /// Whether some component joins a left portal to a right one: only
+    /// then can material cross from one side to the other.
+    ///
+    /// ```
+    /// use tracery_core::vector_brush::TopologyDescriptor;
+    /// assert!(TopologyDescriptor::new(&[0, 1], &[1], 0, 0).passes_through());
+    /// // Two parts, one on each side.
+    /// assert!(!TopologyDescriptor::new(&[0], &[1], 0, 0).passes_through());
+    /// ```
+    pub fn passes_through(&self) -> bool {
+        self.left.iter().any(|id| self.right.contains(id))
+    }
+
     /// Whether no portal is left open on either side.
     pub fn is_finished(&self) -> bool {
         self.left.is_empty() && self.right.is_empty()

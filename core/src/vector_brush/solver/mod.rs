@@ -31,6 +31,13 @@
 //! starts with its smallest piece index: one search per start piece `s`, using
 //! only pieces `≥ s`, run in parallel. At the end the descriptor is joined with
 //! itself ([`TopologyDescriptor::close_loop`]).
+//!
+//! # Any number of parts and holes
+//!
+//! Where the targets constrain neither, the search first runs with one
+//! descriptor for all, and a loop's pattern is recounted afterwards
+//! (`search::search_all`): the descriptors only told apart partial
+//! patterns the targets accept alike.
 
 mod diagnosis;
 mod search;

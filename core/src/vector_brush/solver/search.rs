@@ -6,17 +6,24 @@ use std::sync::atomic::{AtomicBool, AtomicUsize, Ordering};
 
 use rayon::prelude::*;
 
+mod band;
 mod bound;
 mod cap;
+mod finish;
 mod narrowing;
+mod topology;
 
+use band::{MAX_HOLD, band_allowance};
 use bound::CompletionBound;
+use finish::finish;
+use topology::leave_out_what_loops_cannot_cross;
+pub(super) use topology::{Topology, search_all};
 
 use super::state::{Bucket, Interner, LengthGrid, NO_PARENT, PRUNED, State, Trace, UNKNOWN};
-use super::{BAND_MARGIN, CurveKind, Goal, Solution, SolveOptions, tolerance_levels};
+use super::{CurveKind, Goal, Solution, SolveOptions, tolerance_levels};
 use crate::control::Control;
 use crate::random::splitmix64;
-use crate::vector_brush::{Autocorrelation, MATCH_WEIGHT, PieceSet, Similarity, SolveError};
+use crate::vector_brush::{Autocorrelation, MATCH_WEIGHT, PieceSet, Similarity, SolveError, TopologyDescriptor};
 
 /// The variety weight [`super::SolveOptions::diversity`] was set against.
 const DIVERSITY_VARIETY: f64 = 0.3;
@@ -54,6 +61,10 @@ pub(super) struct Problem<'a> {
     /// once one of them has found one.
     stop_at_first: bool,
     found_any: &'a AtomicBool,
+    /// Whether descriptors are followed. Where the targets ask for nothing
+    /// ("any" parts and holes), every state shares one descriptor, and the
+    /// finished pattern is checked afterwards ([`search_all`]).
+    topology: Topology,
     states: &'a AtomicUsize,
     created: &'a AtomicUsize,
     work_done: &'a AtomicUsize,
@@ -74,6 +85,9 @@ impl Problem<'_> {
     }
 
     fn join(&self, interner: &mut Interner, descriptor: u32, piece: usize) -> u32 {
+        if self.topology == Topology::Ignored {
+            return descriptor;
+        }
         let slot = descriptor as usize * interner.pieces + piece;
         let cached = interner.joins[slot];
         if cached != UNKNOWN {
@@ -89,32 +103,6 @@ impl Problem<'_> {
         };
         interner.joins[slot] = id;
         id
-    }
-
-    /// Where piece `b` goes when the alignments put it at `raw`: there, if it
-    /// stays in the band; otherwise held at the band's edge, paying for the
-    /// mismatch this leaves at the seam, up to [`MAX_HOLD`] of the band.
-    /// Returns the offset and the extra seam cost, or `None` when the piece
-    /// cannot be held in.
-    #[inline]
-    fn hold_in_band(&self, raw: f32, b: usize) -> Option<(f32, f64)> {
-        let allowance = self.allowance[b];
-        if raw.abs() <= allowance {
-            return Some((raw, 0.0));
-        }
-        let held = raw.abs() - allowance;
-        if held > self.max_hold {
-            return None;
-        }
-        Some((raw.clamp(-allowance, allowance), self.misalignment_cost(held)))
-    }
-
-    /// What a seam pays when its pieces sit `by` off their best alignment:
-    /// moving every endpoint by `by` adds exactly `(by / H)²` to the pair's
-    /// mean squared mismatch, `τ` being its least-squares alignment.
-    fn misalignment_cost(&self, by: f32) -> f64 {
-        let relative = f64::from(by) / self.set.exemplar_height.max(f64::MIN_POSITIVE);
-        MATCH_WEIGHT * relative * relative
     }
 
     fn seam_cost(&self, a: usize, b: usize, length: u32) -> f64 {
@@ -135,6 +123,16 @@ impl Problem<'_> {
         if done.is_multiple_of(16) || done == self.work_total {
             self.control.report(done as f32 / self.work_total.max(1) as f32);
         }
+    }
+
+    /// The descriptor a pattern starting with `piece` begins with, or
+    /// `None` where it can no longer meet the targets.
+    fn start_descriptor(&self, interner: &mut Interner, piece: usize) -> Option<u32> {
+        if self.topology == Topology::Ignored {
+            return Some(interner.intern(TopologyDescriptor::default()));
+        }
+        let d = self.options.clamp(&self.set.pieces[piece].descriptor);
+        self.options.viable(&d).then(|| interner.intern(d))
     }
 
     /// One search from the given start pieces, using pieces ranked at
@@ -259,11 +257,12 @@ impl<'p> Search<'p> {
         }
         for &s in self.starts.iter().filter(|_| first_key == 0) {
             let length = problem.widths[s];
-            let d = problem.options.clamp(&problem.set.pieces[s].descriptor);
-            if length > max_len || !problem.options.viable(&d) {
+            if length > max_len {
                 continue;
             }
-            let descriptor = self.interner.intern(d);
+            let Some(descriptor) = problem.start_descriptor(&mut self.interner, s) else {
+                continue;
+            };
             let state = State { cost: 0.0, length, parent: NO_PARENT, descriptor, delta: 0.0, piece: s as u16 };
             let key = problem.grid.key(length).max(1);
             self.add(key, state, 0.0, || Autocorrelation::default().push(s, &problem.similarity))?;
@@ -347,11 +346,20 @@ impl<'p> Search<'p> {
                 total += problem.misalignment_cost(raw);
             }
         }
-        let Some(t) = problem.options.finished(&self.interner.list[state.descriptor as usize]) else {
-            return;
-        };
-        if !problem.options.meets_targets(t) {
-            return;
+        if problem.topology == Topology::Ignored {
+            // What the targets ask of a finished pattern is checked on the
+            // best one afterwards; an open curve's pattern ends without a
+            // portal left open.
+            if options.curve == CurveKind::Open && !problem.set.pieces[a].right.is_empty() {
+                return;
+            }
+        } else {
+            let Some(t) = problem.options.finished(&self.interner.list[state.descriptor as usize]) else {
+                return;
+            };
+            if !problem.options.meets_targets(t) {
+                return;
+            }
         }
         if self.variety() {
             total += options.variety * auto.value();
@@ -401,32 +409,16 @@ impl<'p> Search<'p> {
     }
 }
 
-/// Room the band leaves a piece that reaches `extent` from its axis: how far
-/// it may be raised or lowered before it pokes out of the band by more than
-/// [`BAND_MARGIN`]. Never quite zero, so that a piece as tall as the band can
-/// still sit on the axis despite rounding.
-pub(super) fn band_allowance(band_height: f64, extent: f64) -> f64 {
-    if !band_height.is_finite() {
-        return f64::INFINITY;
-    }
-    let half = 0.5 * band_height;
-    (half * (1.0 + BAND_MARGIN) - extent).max(0.02 * half)
-}
-
-/// Most a piece may be held back from its alignment at one seam to stay in
-/// the band, as a fraction of the band: stitching bends the pieces to close
-/// the mismatch, and beyond this the bend would show.
-pub const MAX_HOLD: f64 = 0.2;
-
 /// Slack on the accepted lengths, relative to the target length.
 const LENGTH_SLACK: f64 = 1e-9;
 
-/// Runs the searches for growing tolerances until one finds a solution.
-pub(super) fn search_all(
+/// One search over growing tolerances, following the descriptors or not.
+pub(super) fn search_with(
     set: &PieceSet,
     options: &SolveOptions,
     goal: Goal,
     control: &Control,
+    topology: Topology,
 ) -> Result<Option<Solution>, SolveError> {
     let bounded_search = goal == Goal::Bounded;
     let n = set.len();
@@ -464,6 +456,12 @@ pub(super) fn search_all(
                 reuse[a * n + b] += options.diversity * mean_cost * variety_pull;
             }
         }
+    }
+    if topology == Topology::Ignored && options.curve == CurveKind::Closed && options.closed_pattern {
+        // After the mean seam cost above, which sets the jitter and the
+        // reuse penalty, so that the objective is the one the full search
+        // minimizes.
+        leave_out_what_loops_cannot_cross(set, &mut cost);
     }
     let states = AtomicUsize::new(0);
     let bounded = AtomicBool::new(false);
@@ -513,6 +511,7 @@ pub(super) fn search_all(
         bounded: &bounded,
         stop_at_first: goal == Goal::Any,
         found_any: &found_any,
+        topology,
         states: &states,
         created: &created,
         work_done: &work_done,
@@ -562,39 +561,4 @@ pub(super) fn search_all(
         }
     }
     Ok(None)
-}
-
-/// Recomputes what a sequence achieves from the pieces themselves.
-fn finish(set: &PieceSet, options: &SolveOptions, found: Found, tolerance: f64, created: usize) -> Solution {
-    let n = found.pieces.len();
-    let mut matching = 0.0;
-    let mut descriptor = set.pieces[found.pieces[0]].descriptor.clone();
-    for w in found.pieces.windows(2) {
-        matching += set.pair(w[0], w[1]).map_or(0.0, |p| p.cost);
-        descriptor = descriptor.join(&set.pieces[w[1]].descriptor).unwrap_or(descriptor);
-    }
-    let (components, holes, wraps) = match options.curve {
-        CurveKind::Open => (descriptor.components(), descriptor.holes(), 0),
-        CurveKind::Closed => {
-            matching += set.pair(found.pieces[n - 1], found.pieces[0]).map_or(0.0, |p| p.cost);
-            let t = descriptor.close_loop().unwrap_or_default();
-            (t.components, t.holes, t.wraps)
-        }
-    };
-    let similarity = Similarity::new(options.autocorrelation_sigma);
-    Solution {
-        length: found.pieces.iter().map(|&p| set.pieces[p].width).sum(),
-        autocorrelation: Autocorrelation::of(&found.pieces, &similarity).value(),
-        pieces: found.pieces,
-        offsets: found.offsets,
-        cost: found.total,
-        matching_cost: matching,
-        target_length: options.target_length,
-        tolerance,
-        components,
-        holes,
-        wraps,
-        states: created,
-        bounded: None,
-    }
 }

@@ -42,18 +42,11 @@ impl Search<'_> {
             return Ok(None);
         }
         let n = problem.n();
-        let d = problem.options.clamp(&problem.set.pieces[s].descriptor);
-        if !problem.options.viable(&d) {
+        let Some(descriptor) = problem.start_descriptor(&mut self.interner, s) else {
             return Ok(None);
-        }
-        let mut state = State {
-            cost: 0.0,
-            length: problem.widths[s],
-            parent: NO_PARENT,
-            descriptor: self.interner.intern(d),
-            delta: 0.0,
-            piece: s as u16,
         };
+        let mut state =
+            State { cost: 0.0, length: problem.widths[s], parent: NO_PARENT, descriptor, delta: 0.0, piece: s as u16 };
         let mut correlation = Autocorrelation::default().push(s, &problem.similarity);
         let arena_start = self.arena.len();
         for &b in &prefix[1..] {
