@@ -73,11 +73,9 @@ pub fn bare_share(surface: &SurfaceMesh, elements: &[Element], reach_mm: f64) ->
         let piece = area / (n * n) as f64;
         for i in 0..n {
             for j in 0..n - i {
-                let mut middles = vec![at(i as f64 + 1.0 / 3.0, j as f64 + 1.0 / 3.0)];
-                if i + j + 1 < n {
-                    middles.push(at(i as f64 + 2.0 / 3.0, j as f64 + 2.0 / 3.0));
-                }
-                for p in middles {
+                let upright = at(i as f64 + 1.0 / 3.0, j as f64 + 1.0 / 3.0);
+                let turned = (i + j + 1 < n).then(|| at(i as f64 + 2.0 / 3.0, j as f64 + 2.0 / 3.0));
+                for p in std::iter::once(upright).chain(turned) {
                     total += piece;
                     if !grid.reaches(p) {
                         bare += piece;

@@ -34,7 +34,11 @@ pub(in crate::vector_brush::solver) fn search_all(
 ) -> Result<Option<Solution>, SolveError> {
     if options.components == Target::Any && options.holes == Target::Any {
         match search_with(set, options, goal, control, Topology::Ignored) {
-            Ok(Some(solution)) if meets_targets(set, options, &solution.pieces) => return Ok(Some(solution)),
+            // The solution's counts are recounted from its pieces' own
+            // descriptors (`finish`), not taken from the search.
+            Ok(Some(solution)) if options.meets_targets((solution.components, solution.holes, solution.wraps)) => {
+                return Ok(Some(solution));
+            }
             // A bounded search's empty answer proves nothing.
             Ok(None) if goal != Goal::Bounded => return Ok(None),
             Ok(_) => {}
@@ -43,22 +47,6 @@ pub(in crate::vector_brush::solver) fn search_all(
         }
     }
     search_with(set, options, goal, control, Topology::Followed)
-}
-
-/// Whether the pattern `pieces` closes and meets the targets, counted on
-/// its pieces' descriptors.
-fn meets_targets(set: &PieceSet, options: &SolveOptions, pieces: &[usize]) -> bool {
-    let Some((&first, rest)) = pieces.split_first() else {
-        return false;
-    };
-    let mut descriptor = set.pieces[first].descriptor.clone();
-    for &p in rest {
-        match descriptor.join(&set.pieces[p].descriptor) {
-            Some(joined) => descriptor = joined,
-            None => return false,
-        }
-    }
-    options.finished(&descriptor).is_some_and(|t| options.meets_targets(t))
 }
 
 /// Marks as incompatible (`NaN` in `cost`, `n × n`) every seam without
