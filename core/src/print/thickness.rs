@@ -1,7 +1,10 @@
-//! Local thickness of a region and of the space around it, measured with
-//! the shrinking-ball method: for a point on the outline, the largest disc
-//! that touches the outline there and stays inside the material (or inside
-//! the empty space) has the local width as its diameter.
+//! Local thickness of a region and of the space around it, as the
+//! shrinking-ball method defines it: for a point on the outline, the largest
+//! disc that touches the outline there and stays inside the material (or
+//! inside the empty space) has the local width as its diameter. The disc is
+//! found in one pass over the edges near it, in closed form per edge
+//! (`EdgeGrid::largest_empty_disc`), rather than by shrinking a ball
+//! query after query.
 
 use glam::DVec2;
 use rayon::prelude::*;
@@ -38,12 +41,10 @@ pub struct Narrow {
 /// A contact closer than this many disc radii along the same ring is the
 /// outline turning (a corner, a rounded end), not material across.
 const LOCAL_ARC_RADII: f64 = 3.0;
-/// Shrinking-ball iterations; it converges in a handful.
-const MAX_ITERATIONS: usize = 40;
 
 /// Every place on `side` of the outline of `region` narrower than
 /// `width_mm`: the outline is sampled every `spacing_mm`, and at each sample
-/// the largest disc tangent there is shrunk until it holds no outline point.
+/// the largest disc tangent there that holds no outline point is found.
 /// Discs stopped by the outline's own turn close by (a corner, the rounded
 /// end of a stroke) are not narrow places; discs stopped by material
 /// across are.
@@ -64,7 +65,7 @@ pub fn narrow_places(region: &Region, side: Side, width_mm: f64, spacing_mm: f64
     if region.is_empty() || width_mm <= 0.0 || spacing_mm <= 0.0 {
         return Vec::new();
     }
-    let grid = EdgeGrid::new(region, width_mm.max(spacing_mm));
+    let grid = EdgeGrid::new(region, width_mm.max(spacing_mm), 1.0);
     let max_radius = width_mm / 2.0;
     // Samples: (edge, point, normal into the measured side).
     let mut samples = Vec::new();
@@ -87,26 +88,7 @@ pub fn narrow_places(region: &Region, side: Side, width_mm: f64, spacing_mm: f64
     samples
         .par_iter()
         .filter_map(|&(edge, p, normal)| {
-            let mut radius = max_radius;
-            let mut contact = None;
-            for _ in 0..MAX_ITERATIONS {
-                let c = p + normal * radius;
-                // A point on the disc's own boundary is not inside it.
-                let Some((e, q)) = grid.nearest_within(c, radius * (1.0 - 1e-9), edge) else { break };
-                let pq = q - p;
-                let towards = normal.dot(pq);
-                if towards <= 1e-12 {
-                    break;
-                }
-                // The disc tangent at p through q.
-                let shrunk = pq.length_squared() / (2.0 * towards);
-                if shrunk >= radius {
-                    break;
-                }
-                radius = shrunk;
-                contact = Some((e, q));
-            }
-            let (e, q) = contact?;
+            let (radius, e, q) = grid.largest_empty_disc(p, normal, max_radius, edge)?;
             let apart = grid.arc_between(edge, p, e, q);
             if apart < LOCAL_ARC_RADII * radius {
                 return None;
