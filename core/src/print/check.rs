@@ -93,7 +93,7 @@ pub fn check(region: &Region, seams_mm: &[[DVec2; 2]], settings: &PrintSettings,
     let thin_features = group(narrow_places(region, Side::Material, width, spacing), width);
     let narrow_gaps = group(narrow_places(region, Side::Gap, width, spacing), width);
     let seam_length = seams_mm.iter().map(|[a, b]| a.distance(*b)).fold(0.0, f64::max);
-    let edges = EdgeGrid::new(region, (seam_length / 8.0).max(width), 1.0);
+    let edges = EdgeGrid::new(region, (seam_length / 8.0).max(width));
     let mut weak_bridges: Vec<Bridge> = seams_mm
         .iter()
         .flat_map(|s| bridges_on(region, &edges, *s))

@@ -1,5 +1,6 @@
-//! A region's outline edges in a uniform grid: nearest-point queries for
-//! the shrinking balls, and the edges near a seam for the bridges.
+//! A region's outline edges in a uniform grid: the largest empty disc
+//! tangent at an outline point (the local width), and the edges near a
+//! seam for the bridges.
 
 use glam::DVec2;
 
@@ -47,9 +48,9 @@ pub(super) struct EdgeGrid<'a> {
 }
 
 impl<'a> EdgeGrid<'a> {
-    /// The edges of `region`, for queries that reach about `cell_mm`, in
-    /// buckets `cell_mm / buckets_per_cell` wide.
-    pub(super) fn new(region: &'a Region, cell_mm: f64, buckets_per_cell: f64) -> Self {
+    /// The edges of `region`, in buckets `cell_mm` wide (wider only where
+    /// the region would need more than [`MAX_BUCKETS`]).
+    pub(super) fn new(region: &'a Region, cell_mm: f64) -> Self {
         let rings: Vec<&[DVec2]> = region.rings().map(|r| r.as_slice()).collect();
         let mut edges = Vec::new();
         let mut ring_lengths = Vec::new();
@@ -67,7 +68,7 @@ impl<'a> EdgeGrid<'a> {
                 (lo.min(e.a).min(e.b), hi.max(e.a).max(e.b))
             });
         let (low, size) = if edges.is_empty() { (DVec2::ZERO, DVec2::ZERO) } else { (low, high - low) };
-        let mut bucket_mm = (cell_mm / buckets_per_cell.max(1.0)).max(f64::MIN_POSITIVE);
+        let mut bucket_mm = cell_mm.max(f64::MIN_POSITIVE);
         let area_buckets = (size.x / bucket_mm + 2.0) * (size.y / bucket_mm + 2.0);
         if area_buckets > MAX_BUCKETS {
             bucket_mm *= (area_buckets / MAX_BUCKETS).sqrt();
@@ -339,7 +340,7 @@ mod tests {
     #[test]
     fn the_closed_form_disc_is_the_one_the_shrinking_ball_reaches() {
         let region = wavy_region();
-        let grid = EdgeGrid::new(&region, 0.8, 2.0);
+        let grid = EdgeGrid::new(&region, 0.4);
         let mut compared = 0;
         for (i, e) in grid.edges.iter().enumerate() {
             let along = (e.b - e.a).normalize();

@@ -65,7 +65,7 @@ pub fn narrow_places(region: &Region, side: Side, width_mm: f64, spacing_mm: f64
     if region.is_empty() || width_mm <= 0.0 || spacing_mm <= 0.0 {
         return Vec::new();
     }
-    let grid = EdgeGrid::new(region, width_mm.max(spacing_mm), 1.0);
+    let grid = EdgeGrid::new(region, width_mm.max(spacing_mm));
     let max_radius = width_mm / 2.0;
     // Samples: (edge, point, normal into the measured side).
     let mut samples = Vec::new();
