@@ -57,7 +57,7 @@ fn main() {
                 let mut settings = Settings::default();
                 settings.components = target(components);
                 settings.holes = target(holes);
-                settings.closed_pattern = !(spec.starts_with("line") || spec.starts_with("wave"));
+                settings.closed_pattern = matches!(&along, Along::Curve(curve) if curve.is_closed());
                 let start = Instant::now();
                 let Ok(product) = make_product(&exemplar, &along, &settings, &Control::default()) else {
                     refused += 1;

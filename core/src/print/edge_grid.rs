@@ -176,11 +176,11 @@ impl<'a> EdgeGrid<'a> {
         max_radius: f64,
         skip: usize,
     ) -> Option<(f64, usize, DVec2)> {
-        let (centre, reach) = (p + normal * max_radius, DVec2::splat(max_radius));
+        let (largest, reach) = (p + normal * max_radius, DVec2::splat(max_radius));
         // A point on the largest disc's own boundary is not inside it.
         let limit = max_radius * (1.0 - 1e-9);
         let mut best: Option<(f64, usize, DVec2)> = None;
-        for l in self.listed_in(centre - reach, centre + reach) {
+        for l in self.listed_in(largest - reach, largest + reach) {
             if l.edge as usize == skip {
                 continue;
             }
@@ -190,13 +190,14 @@ impl<'a> EdgeGrid<'a> {
             }
             // Only edges that reach into the best disc so far can stop it
             // sooner (the discs tangent at `p` are nested).
-            let radius = best.map_or(limit, |b| b.0);
-            let (_, closest) = closest_on_segment(p + normal * radius, l.a, l.b);
-            if closest.distance_squared(p + normal * radius) >= radius * radius {
+            let bound = best.map_or(limit, |b| b.0);
+            let centre = p + normal * bound;
+            if closest_on_segment(centre, l.a, l.b).1.distance_squared(centre) >= bound * bound {
                 continue;
             }
-            let Some((radius, q)) = smallest_tangent_disc(p, normal, l.a, l.b) else { continue };
-            if radius < best.map_or(limit, |b| b.0) {
+            if let Some((radius, q)) = smallest_tangent_disc(p, normal, l.a, l.b)
+                && radius < bound
+            {
                 best = Some((radius, l.edge as usize, q));
             }
         }
