@@ -15,7 +15,7 @@ pub use elements::{ElementStatistics, TOUCH_MM, element_statistics};
 use glam::DVec2;
 
 use crate::curve::Curve;
-use crate::geom::Region;
+use crate::geom::{Region, closest_on_segment};
 
 /// Fraction of positions that must agree for a shift to count as a period.
 pub const PERIOD_AGREEMENT: f64 = 0.9;
@@ -88,9 +88,37 @@ pub fn longest_repeat(sequence: &[usize]) -> usize {
 /// assert!((max_distance_from(&region, &Curve::line(10.0).unwrap()) - 4.0).abs() < 1e-9);
 /// ```
 pub fn max_distance_from(region: &Region, curve: &Curve) -> f64 {
-    // Every vertex against every segment of the curve: a few million
-    // products for a large pattern, cheap next to synthesis.
-    region.rings().flatten().map(|&p| curve.distance(p)).fold(0.0, f64::max)
+    // Every vertex against the curve's segments, exactly, but a vertex
+    // stops looking as soon as one segment is within the largest distance
+    // found so far: it cannot raise the maximum. Checking first the segment
+    // nearest to the vertex before it along the ring makes that the usual
+    // case, so a large pattern costs a few segments a vertex instead of all
+    // of them (every vertex against every segment took 40 % of a corpus
+    // sweep's time on dense loops).
+    let segments: Vec<[DVec2; 2]> = curve.points().windows(2).map(|w| [w[0], w[1]]).collect();
+    let distance = |p: DVec2, s: &[DVec2; 2]| p.distance(closest_on_segment(p, s[0], s[1]).1);
+    let mut largest: f64 = 0.0;
+    let mut hint = 0;
+    for ring in region.rings() {
+        for &p in ring {
+            let Some(first) = segments.get(hint) else { return f64::INFINITY };
+            let mut nearest = distance(p, first);
+            if nearest <= largest {
+                continue;
+            }
+            for (k, s) in segments.iter().enumerate() {
+                let d = distance(p, s);
+                if d < nearest {
+                    (nearest, hint) = (d, k);
+                    if nearest <= largest {
+                        break;
+                    }
+                }
+            }
+            largest = largest.max(nearest);
+        }
+    }
+    largest
 }
 
 /// The kink of the outline where it crosses each seam, degrees: at every
@@ -186,4 +214,30 @@ pub fn distinctness(a: &[(usize, f64)], b: &[(usize, f64)], closed: bool) -> f64
     let differing = |shift: usize| (0..SAMPLES).filter(|&i| sa[i] != sb[(i + shift) % SAMPLES]).count();
     let fewest = if closed { (0..SAMPLES).map(differing).min().unwrap_or(0) } else { differing(0) };
     fewest as f64 / SAMPLES as f64
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::geom::Polygon;
+    use crate::random::SplitMix64;
+
+    /// The early stop finds the same largest distance as every vertex
+    /// against every segment, on rings that wander about a wave.
+    #[test]
+    fn the_largest_distance_is_the_one_every_segment_gives() {
+        let curve = Curve::wave(120.0).unwrap();
+        let mut random = SplitMix64::new(7);
+        for _ in 0..20 {
+            let ring: Vec<DVec2> = (0..400)
+                .map(|k| {
+                    let u = 120.0 * k as f64 / 400.0;
+                    curve.map(u, 6.0 * (random.next_unit() - 0.5)) + DVec2::new(0.0, 2.0 * random.next_unit())
+                })
+                .collect();
+            let region = Region::new(vec![Polygon { outer: ring, holes: vec![] }]);
+            let plain = region.rings().flatten().map(|&p| curve.distance(p)).fold(0.0, f64::max);
+            assert_eq!(max_distance_from(&region, &curve), plain);
+        }
+    }
 }
