@@ -87,9 +87,14 @@ impl Mesh {
                 filled[a as usize] += 1;
             }
         }
+        // Sorted, so that a vertex with thousands of triangles (the apex of a
+        // fan in an imported mesh) costs a sort and searches, not their square.
+        for a in 0..self.vertices.len() {
+            targets[start[a] as usize..start[a + 1] as usize].sort_unstable();
+        }
         let uses = |a: u32, b: u32| {
             let out = &targets[start[a as usize] as usize..start[a as usize + 1] as usize];
-            out.iter().filter(|&&t| t == b).count()
+            out.partition_point(|&t| t <= b) - out.partition_point(|&t| t < b)
         };
         for tri in &self.triangles {
             for k in 0..3 {
