@@ -13,8 +13,17 @@ impl SolveOptions {
     }
 
     /// Whether a partial solution can still meet the targets.
+    ///
+    /// On a loop that must run all around, material must also still pass
+    /// through from the first piece's left side to the last piece's right:
+    /// a component that wraps crosses the closing seam, and a cycle through
+    /// it that winds needs a path from one side to the other (with none,
+    /// its crossings of the seam alternate in direction and cancel). Once no
+    /// component touches both sides, none ever will, since later pieces
+    /// join only on the right.
     pub(super) fn viable(&self, d: &TopologyDescriptor) -> bool {
-        !self.components.exceeded_by(d.min_final_components()) && !self.holes.exceeded_by(d.holes())
+        let may_wrap = self.curve == CurveKind::Open || !self.closed_pattern || d.passes_through();
+        may_wrap && !self.components.exceeded_by(d.min_final_components()) && !self.holes.exceeded_by(d.holes())
     }
 
     /// Components, holes and wraps of a finished pattern, or `None` where
