@@ -87,11 +87,24 @@ pub(super) struct Trace {
 }
 
 /// The open states of one length, found by `descriptor × pieces + piece`.
+///
+/// While the keys are few (below [`DIRECT_KEYS`]) they index a table
+/// directly. Past that, the bucket finds them through a small
+/// open-addressing table sized to the states it holds: with many
+/// descriptors a table over every key spans megabytes per length, and its
+/// look-ups missed the cache (a fifth of a capped loop search's time in
+/// `perf`), where the hashed one holds a few thousand entries.
 #[derive(Default)]
 pub(super) struct Bucket {
-    /// Index into `open` per key, [`NO_PARENT`] where empty.
+    /// Index into `open` per key, [`NO_PARENT`] where empty (direct keys).
     slots: Vec<u32>,
-    /// The keys of `open`, in the same order, to clear `slots` after.
+    /// `(key, index into open)`, [`NO_PARENT`] as key where free; a power
+    /// of two, at least twice the states held (hashed keys).
+    table: Vec<(u32, u32)>,
+    /// Whether the keys have outgrown the direct table; once they have,
+    /// they stay hashed, since a search's descriptors only grow.
+    hashed: bool,
+    /// The keys of `open`, in the same order.
     keys: Vec<u32>,
     /// The states, in insertion order (which is also the expansion order).
     pub(super) open: Vec<State>,
@@ -99,16 +112,66 @@ pub(super) struct Bucket {
     pub(super) auto: Vec<Autocorrelation>,
 }
 
+/// Keys below this are looked up directly (a table of at most 16 kB per
+/// length); a search that meets a larger key hashes its keys from then on.
+const DIRECT_KEYS: usize = 1 << 12;
+
+/// Where probing for `key` starts in a table of `mask + 1` slots.
+fn home(key: u32, mask: usize) -> usize {
+    // Fibonacci hashing: the keys of one descriptor are consecutive.
+    (u64::from(key).wrapping_mul(0x9E37_79B9_7F4A_7C15) >> 32) as usize & mask
+}
+
 impl Bucket {
     pub(super) fn get(&self, key: usize) -> Option<usize> {
-        self.slots.get(key).copied().filter(|&i| i != NO_PARENT).map(|i| i as usize)
+        if !self.hashed {
+            return self.slots.get(key).copied().filter(|&i| i != NO_PARENT).map(|i| i as usize);
+        }
+        let mask = self.table.len() - 1;
+        let mut at = home(key as u32, mask);
+        loop {
+            let (k, i) = self.table[at];
+            if k == key as u32 {
+                return Some(i as usize);
+            }
+            if k == NO_PARENT {
+                return None;
+            }
+            at = (at + 1) & mask;
+        }
+    }
+
+    fn place(table: &mut [(u32, u32)], key: u32, index: u32) {
+        let mask = table.len() - 1;
+        let mut at = home(key, mask);
+        while table[at].0 != NO_PARENT {
+            at = (at + 1) & mask;
+        }
+        table[at] = (key, index);
     }
 
     pub(super) fn insert(&mut self, key: usize, state: State, auto: Option<Autocorrelation>) {
-        if key >= self.slots.len() {
-            self.slots.resize((key + 1).next_power_of_two(), NO_PARENT);
+        debug_assert!(key < NO_PARENT as usize, "state keys fit in 32 bits");
+        if !self.hashed && key >= DIRECT_KEYS {
+            self.hashed = true;
+            self.slots = Vec::new();
         }
-        self.slots[key] = self.open.len() as u32;
+        if self.hashed {
+            if self.table.len() < 2 * (self.open.len() + 1) {
+                let size = (4 * (self.open.len() + 1)).next_power_of_two().max(64);
+                self.table.clear();
+                self.table.resize(size, (NO_PARENT, 0));
+                for (index, &k) in self.keys.iter().enumerate() {
+                    Self::place(&mut self.table, k, index as u32);
+                }
+            }
+            Self::place(&mut self.table, key as u32, self.open.len() as u32);
+        } else {
+            if key >= self.slots.len() {
+                self.slots.resize((key + 1).next_power_of_two(), NO_PARENT);
+            }
+            self.slots[key] = self.open.len() as u32;
+        }
         self.keys.push(key as u32);
         self.open.push(state);
         self.auto.extend(auto);
@@ -116,8 +179,13 @@ impl Bucket {
 
     /// Moves the states out, leaving the bucket empty for reuse.
     pub(super) fn drain_into(&mut self, states: &mut Vec<State>, autos: &mut Vec<Autocorrelation>) {
-        for key in self.keys.drain(..) {
-            self.slots[key as usize] = NO_PARENT;
+        if self.hashed {
+            self.keys.clear();
+            self.table.fill((NO_PARENT, 0));
+        } else {
+            for key in self.keys.drain(..) {
+                self.slots[key as usize] = NO_PARENT;
+            }
         }
         // The callers' vectors are empty: swapping hands the states over
         // without copying them (an open state with its variety history is
@@ -157,5 +225,41 @@ impl Interner {
         self.list.push(d);
         self.joins.resize(self.joins.len() + self.pieces, UNKNOWN);
         id
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn state(piece: u16) -> State {
+        State { cost: 0.0, length: 0.0, parent: NO_PARENT, descriptor: 0, delta: 0.0, piece }
+    }
+
+    /// Keys are found where they were put, before and after they outgrow
+    /// the direct table, and a drained bucket holds nothing.
+    #[test]
+    fn a_bucket_finds_its_keys_direct_and_hashed() {
+        let mut bucket = Bucket::default();
+        // A hundred direct keys first, then keys past the direct table.
+        let keys: Vec<usize> =
+            (0..100).map(|k| k * 37).chain((100..3000).map(|k| DIRECT_KEYS + (k * 7919) % (3 * DIRECT_KEYS))).collect();
+        for round in 0..2 {
+            for (i, &key) in keys.iter().enumerate() {
+                assert_eq!(bucket.hashed, round > 0 || i > 100, "round {round}, key {i}");
+                assert_eq!(bucket.get(key), None, "round {round}: {key} before it was put");
+                bucket.insert(key, state(i as u16), None);
+                assert_eq!(bucket.get(key), Some(i), "round {round}: {key}");
+            }
+            assert!(bucket.hashed);
+            for (i, &key) in keys.iter().enumerate() {
+                assert_eq!(bucket.get(key), Some(i));
+                assert_eq!(bucket.get(key + 4 * DIRECT_KEYS), None);
+            }
+            let (mut open, mut autos) = (Vec::new(), Vec::new());
+            bucket.drain_into(&mut open, &mut autos);
+            assert_eq!(open.len(), keys.len());
+            assert!(keys.iter().all(|&key| bucket.get(key).is_none()));
+        }
     }
 }
