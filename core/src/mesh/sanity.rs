@@ -65,6 +65,14 @@ impl Mesh {
         if let Some(vertex) = self.vertices.iter().position(|v| v.iter().any(|x| !x.is_finite())) {
             return Err(MeshDefect::NotFinite { vertex });
         }
+        for (t, tri) in self.triangles.iter().enumerate() {
+            if let Some(&vertex) = tri.iter().find(|&&i| i as usize >= self.vertices.len()) {
+                return Err(MeshDefect::BadIndex { triangle: t, vertex, vertices: self.vertices.len() });
+            }
+            if tri[0] == tri[1] || tri[1] == tri[2] || tri[0] == tri[2] {
+                return Err(MeshDefect::Degenerate { triangle: t });
+            }
+        }
         // Each vertex's outgoing edges in one flat array (counting sort by
         // the edge's first vertex), so that both directions of an edge are
         // found by scanning two short lists. A hash map of directed edges did
@@ -137,6 +145,12 @@ mod tests {
         two_bodies.vertices.extend([[5.0, 0.0, 0.0], [6.0, 0.0, 0.0], [5.0, 1.0, 0.0], [5.0, 0.0, 1.0]]);
         two_bodies.triangles.extend(tetrahedron().triangles.iter().map(|t| t.map(|i| i + 4)));
         assert_eq!(two_bodies.sanity_check(), Ok(()));
+        let mut bad_index = tetrahedron();
+        bad_index.triangles[1] = [0, 1, 7];
+        assert_eq!(bad_index.sanity_check(), Err(MeshDefect::BadIndex { triangle: 1, vertex: 7, vertices: 4 }));
+        let mut degenerate = tetrahedron();
+        degenerate.triangles[3] = [0, 3, 0];
+        assert_eq!(degenerate.sanity_check(), Err(MeshDefect::Degenerate { triangle: 3 }));
         for (name, mesh) in [("flipped", flipped), ("doubled", doubled), ("open", open)] {
             match mesh.sanity_check() {
                 Err(MeshDefect::Edge { a, b, forward, backward }) => {
