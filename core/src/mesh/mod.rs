@@ -5,6 +5,7 @@
 
 mod boolean;
 mod boundary;
+mod by_vertex;
 mod extrude;
 mod import;
 mod refine;

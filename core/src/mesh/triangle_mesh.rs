@@ -15,34 +15,20 @@ impl Mesh {
     fn shell_of_triangles(&self) -> Vec<usize> {
         let n = self.triangles.len();
         let mut sets = crate::disjoint_sets::DisjointSets::new(n);
-        // Each edge listed once under its lower vertex, with its triangle, in
-        // one flat array (a counting sort); the triangles of an edge are then
-        // found in that vertex's short list. A hash map keyed by edge did the
-        // same, and was a tenth of a corpus sweep.
-        let mut start = vec![0u32; self.vertices.len() + 1];
-        for tri in &self.triangles {
-            for k in 0..3 {
-                start[tri[k].min(tri[(k + 1) % 3]) as usize + 1] += 1;
-            }
-        }
-        for v in 0..self.vertices.len() {
-            start[v + 1] += start[v];
-        }
-        let mut filled = start.clone();
-        let mut edges = vec![(0u32, 0u32); 3 * n];
-        for (t, tri) in self.triangles.iter().enumerate() {
-            for k in 0..3 {
-                let (a, b) = (tri[k].min(tri[(k + 1) % 3]), tri[k].max(tri[(k + 1) % 3]));
-                edges[filled[a as usize] as usize] = (b, t as u32);
-                filled[a as usize] += 1;
-            }
-        }
-        for a in 0..self.vertices.len() {
-            // Sorted, so that a vertex with thousands of triangles (the apex
-            // of a fan in an imported mesh) costs a sort, not their square.
-            let out = &mut edges[start[a] as usize..start[a + 1] as usize];
-            out.sort_unstable();
-            for w in out.windows(2) {
+        // Each edge listed under its lower vertex with its triangle, so that
+        // the triangles of an edge are neighbours in that vertex's sorted
+        // list. A hash map keyed by edge did the same, and was a tenth of a
+        // corpus sweep.
+        let edges = || {
+            self.triangles.iter().enumerate().flat_map(|(t, tri)| {
+                (0..3).map(move |k| {
+                    let (a, b) = (tri[k], tri[(k + 1) % 3]);
+                    (a.min(b), (a.max(b), t as u32))
+                })
+            })
+        };
+        for list in super::by_vertex::ByVertex::new(self.vertices.len(), edges).lists() {
+            for w in list.windows(2) {
                 if w[0].0 == w[1].0 {
                     sets.join(w[0].1 as usize, w[1].1 as usize);
                 }
