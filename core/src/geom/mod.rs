@@ -47,7 +47,7 @@ pub use polygon::{Polygon, Region, ring_contains, ring_perimeter, signed_area};
 pub use polyline::{refine_mapped, refine_mapped_indexed, refine_mapped_thinned};
 pub use rect::Rect;
 pub use resolution::{mean_width, without_slivers};
-pub use rings_meet::rings_meet;
+pub use rings_meet::{meeting_rings, rings_meet};
 pub use sanity::{MIN_RING_AREA, RegionDefect};
 pub use segment::{closest_on_segment, polyline_distance};
 pub use smooth_outline::{OutlineSegment, SmoothOptions, SmoothRing, smooth_region, smooth_ring};
