@@ -326,7 +326,11 @@ impl Curve {
     /// The unit tangent at arc length `u`, interpolated between the smoothed
     /// tangents of the points so that it turns continuously and evenly.
     pub fn tangent(&self, u: f64) -> DVec2 {
-        let (k, t) = self.locate(u);
+        self.tangent_at(self.locate(u))
+    }
+
+    /// The tangent at segment `k`, fraction `t` ([`Self::locate`]).
+    fn tangent_at(&self, (k, t): (usize, f64)) -> DVec2 {
         if self.tangents.is_empty() {
             return (self.points[k + 1] - self.points[k]).normalize_or(DVec2::X);
         }
@@ -371,7 +375,9 @@ impl Curve {
 
     /// The point at `(u, v)` of band space: `u` along the curve, `v` along the left normal.
     pub fn map(&self, u: f64, v: f64) -> DVec2 {
-        self.point(u) + self.normal(u) * v
+        // One search for the segment serves the point and the normal.
+        let (k, t) = self.locate(u);
+        self.points[k].lerp(self.points[k + 1], t) + self.tangent_at((k, t)).perp() * v
     }
 
     /// Winding number of the (closed) curve around `p`.
