@@ -5,7 +5,7 @@ use glam::DVec2;
 use super::Curve;
 use rayon::prelude::*;
 
-use crate::geom::{Outline, Polygon, Region, joined_without_union, refine_mapped_indexed, union};
+use crate::geom::{Outline, Polygon, Region, joined_without_union, refine_mapped_indexed, signed_area, union};
 use crate::report::Warning;
 
 /// A pattern laid along a curve, in the plane, in millimetres.
@@ -137,27 +137,29 @@ pub fn map_along_within(band_region: &Region, scale: f64, curve: &Curve, toleran
     let rings: Vec<(usize, &Vec<DVec2>)> =
         band_region.polygons.iter().enumerate().flat_map(|(p, polygon)| polygon.rings().map(move |r| (p, r))).collect();
     let outlines: Vec<Outline> = rings.into_par_iter().map(outline).collect();
-    let region = match joined_without_union(band_region.polygons.len(), &outlines) {
-        Some(region) => region,
-        None => {
-            let mut mapped: Vec<Polygon> = band_region.polygons.iter().map(|_| Polygon::default()).collect();
-            for outline in outlines {
-                let polygon = &mut mapped[outline.polygon];
-                if polygon.outer.is_empty() {
-                    polygon.outer = outline.points;
-                } else {
-                    polygon.holes.push(outline.points);
-                }
+    // Each polygon's area as mapped, outer ring less holes: what the
+    // pattern covers if nothing overlaps.
+    let mut separate = 0.0;
+    let mut outer_seen = vec![false; band_region.polygons.len()];
+    for outline in &outlines {
+        let area = signed_area(&outline.points).abs();
+        separate += if std::mem::replace(&mut outer_seen[outline.polygon], true) { -area } else { area };
+    }
+    let region = joined_without_union(band_region.polygons.len(), &outlines).unwrap_or_else(|| {
+        let mut mapped: Vec<Polygon> = band_region.polygons.iter().map(|_| Polygon::default()).collect();
+        for outline in outlines {
+            let polygon = &mut mapped[outline.polygon];
+            if polygon.outer.is_empty() {
+                polygon.outer = outline.points;
+            } else {
+                polygon.holes.push(outline.points);
             }
-            let separate: f64 = mapped.iter().map(Polygon::area).sum();
-            let region = union(&[&Region::new(mapped)]);
-            if separate > 0.0 && (separate - region.area()) / separate > 1e-3 {
-                warnings.push(Warning::BandOverlapsItself {
-                    merged_percent: 100.0 * (separate - region.area()) / separate,
-                });
-            }
-            region
         }
-    };
+        union(&[&Region::new(mapped)])
+    });
+    // Where the band overlapped itself, part of it went through a union.
+    if separate > 0.0 && (separate - region.area()) / separate > 1e-3 {
+        warnings.push(Warning::BandOverlapsItself { merged_percent: 100.0 * (separate - region.area()) / separate });
+    }
     PlanarPattern { region, warnings, narrowest_band: narrowest }
 }

@@ -7,14 +7,15 @@
 //! it is most of a stage's time (28–38 of 36–55 ms for the mapping along a
 //! curve of 55 k vertices) and changes almost nothing: stitching and mapping
 //! keep outlines apart but at their cuts, where both sides have the same
-//! points to the last bit. Anything this cannot vouch for (an outline that
-//! crosses or touches another, cuts whose sides do not meet exactly) is
-//! left to the union.
+//! points to the last bit. Where joined outlines cross or touch, only the
+//! polygons they belong to go through a union; anything else this cannot
+//! vouch for (cuts whose sides do not meet exactly, a part with two outer
+//! outlines) is left to a union of the whole.
 
 use glam::DVec2;
 use rustc_hash::FxHashMap;
 
-use super::{Polygon, Region, rings_meet, signed_area};
+use super::{Polygon, Region, meeting_rings, rings_meet, signed_area, union};
 use crate::disjoint_sets::DisjointSets;
 
 /// One outline: the polygon it came from, its points, and for each point
@@ -40,9 +41,11 @@ struct Run {
 
 /// The region made of the outlines `rings` (from `polygons` clean, disjoint
 /// polygons), each run joined to the run that has the same two end points
-/// in the other order. `None` where the result would not be clean: outlines
-/// that cross or touch, a component with more or fewer than one outer
-/// ring, or joins that do not fit together. The caller then takes the union.
+/// in the other order, with the polygons whose outlines then cross or
+/// touch resolved by a union of just those. `None` where joining cannot
+/// vouch for the result: a component with more or fewer than one outer
+/// ring, or joins that do not fit together. The caller then takes the
+/// union of the whole.
 ///
 /// Outlines keep their orientation when the sum of their areas is
 /// positive, and are all reversed when it is negative (a mirroring map).
@@ -184,12 +187,29 @@ pub(crate) fn joined_without_union(polygons: usize, rings: &[Outline]) -> Option
     for (group, ring) in holes {
         polygons[*polygon_of_group.get(&group)?].holes.push(ring);
     }
-    let region = Region { polygons };
-    let all: Vec<&Vec<DVec2>> = region.rings().collect();
-    if rings_meet(&all) {
-        return None;
+    Some(resolved(polygons))
+}
+
+/// `polygons` as a clean region: those whose rings cross or touch (their
+/// own or another's) resolved by a union of just them, the others kept
+/// as they are. One bad seam on a pattern of thousands of rings costs a
+/// union of the few polygons at it, not of the whole pattern.
+fn resolved(polygons: Vec<Polygon>) -> Region {
+    let all: Vec<&Vec<DVec2>> = polygons.iter().flat_map(Polygon::rings).collect();
+    if !rings_meet(&all) {
+        return Region { polygons };
     }
-    Some(region)
+    let meeting = meeting_rings(&all);
+    let mut ring = 0;
+    let (mut apart, mut crossed) = (Vec::new(), Vec::new());
+    for polygon in polygons {
+        let count = 1 + polygon.holes.len();
+        let crosses = meeting[ring..ring + count].contains(&true);
+        ring += count;
+        if crosses { crossed.push(polygon) } else { apart.push(polygon) }
+    }
+    apart.extend(union(&[&Region::new(crossed)]).polygons);
+    Region { polygons: apart }
 }
 
 /// Largest `|sin|` of the turn at a vertex that is taken as no turn: far
@@ -330,20 +350,73 @@ mod tests {
         assert_eq!(region.polygons[0].holes.len(), 3);
     }
 
-    #[test]
-    fn outlines_that_overlap_once_mapped_are_left_to_the_union() {
-        // Longer than the loop: the band's end runs over its start.
-        let band = strip(40.0, 2);
-        assert!(joined(&band, &around(30.0), Some(40.0)).is_none());
+    /// The union of `band`'s polygons mapped by `map`, each as one polygon
+    /// whatever its outlines do: what joining must come to.
+    fn union_of_mapped(band: &Region, map: &dyn Fn(DVec2) -> DVec2) -> Region {
+        let mapped = outlines(band, map, None);
+        let polygons = (0..band.polygons.len())
+            .map(|p| {
+                let mut rings = mapped.iter().filter(|o| o.polygon == p).map(|o| o.points.clone());
+                let outer = rings.next().unwrap_or_default();
+                Polygon { outer, holes: rings.collect() }
+            })
+            .collect();
+        crate::geom::union(&[&Region::new(polygons)])
+    }
+
+    /// Parts, holes and area of `region` equal `expected`'s.
+    fn assert_same_region(region: &Region, expected: &Region) {
+        assert!(region.sanity_check().is_ok(), "{:?}", region.sanity_check());
+        let holes = |r: &Region| r.polygons.iter().map(|p| p.holes.len()).sum::<usize>();
+        assert_eq!(region.polygons.len(), expected.polygons.len());
+        assert_eq!(holes(region), holes(expected));
+        assert!(
+            (region.area() - expected.area()).abs() < 1e-6 * expected.area(),
+            "{} {}",
+            region.area(),
+            expected.area()
+        );
     }
 
     #[test]
-    fn ends_that_do_not_meet_exactly_are_left_to_the_union() {
+    fn outlines_that_overlap_once_mapped_go_through_a_union() {
+        // Longer than the loop: the band's end runs over its start.
+        let band = strip(40.0, 2);
+        let region = joined(&band, &around(30.0), Some(40.0)).expect("resolved by a union");
+        assert_same_region(&region, &union_of_mapped(&band, &around(30.0)));
+        // The overlap is gone: the band covers less than its polygons did.
+        assert!(region.area() < band.area());
+    }
+
+    #[test]
+    fn ends_that_do_not_meet_exactly_go_through_a_union() {
         // The end line a hair higher than the start: the runs do not pair, and the outlines touch.
         let length = 40.0;
         let mut band = strip(length, 2);
         band.polygons[0].outer[2].y += 1e-3;
         band.polygons[0].outer[1].y += 1e-3;
-        assert!(joined(&band, &around(length), Some(length)).is_none());
+        let region = joined(&band, &around(length), Some(length)).expect("resolved by a union");
+        assert_same_region(&region, &union_of_mapped(&band, &around(length)));
+        assert_eq!(region.polygons.len(), 1);
+    }
+
+    #[test]
+    fn only_the_polygons_that_cross_go_through_the_union() {
+        // Three squares along a line: the first two overlap, the third is apart.
+        let square = |x: f64, s: f64| {
+            vec![DVec2::new(x, -s), DVec2::new(x + 2.0 * s, -s), DVec2::new(x + 2.0 * s, s), DVec2::new(x, s)]
+        };
+        let band = Region::new(vec![
+            Polygon { outer: square(0.0, 1.0), holes: Vec::new() },
+            Polygon { outer: square(1.5, 0.5), holes: Vec::new() },
+            Polygon { outer: square(10.0, 1.0), holes: Vec::new() },
+        ]);
+        let bend = |p: DVec2| DVec2::new(p.x, p.y + 0.01 * p.x * p.x);
+        let region = joined(&band, &bend, None).expect("resolved by a union");
+        assert_same_region(&region, &union_of_mapped(&band, &bend));
+        assert_eq!(region.polygons.len(), 2);
+        // The square apart keeps its mapped points to the last bit.
+        let apart = &outlines(&band, &bend, None)[2].points;
+        assert!(region.polygons.iter().any(|p| &p.outer == apart));
     }
 }
