@@ -117,7 +117,34 @@ impl MonotoneMap {
         if v >= self.x[n - 1] {
             return (self.y[n - 1] + (v - self.x[n - 1]), 1.0);
         }
-        let k = self.x.partition_point(|&x| x <= v).saturating_sub(1).min(n - 2);
+        let (k, h, t, value) = self.inside(v);
+        let t2 = t * t;
+        let derivative = (6.0 * t2 - 6.0 * t) / h * self.y[k]
+            + (3.0 * t2 - 4.0 * t + 1.0) * self.slope[k]
+            + (-6.0 * t2 + 6.0 * t) / h * self.y[k + 1]
+            + (3.0 * t2 - 2.0 * t) * self.slope[k + 1];
+        (value, derivative)
+    }
+
+    /// The image of `v`, as [`Self::eval`] gives it, without the derivative:
+    /// what placing each point needs.
+    fn value(&self, v: f64) -> f64 {
+        let n = self.x.len();
+        if v <= self.x[0] {
+            self.y[0] + (v - self.x[0])
+        } else if v >= self.x[n - 1] {
+            self.y[n - 1] + (v - self.x[n - 1])
+        } else {
+            self.inside(v).3
+        }
+    }
+
+    /// For `v` strictly inside the heights: the interval `k`, its height
+    /// `h`, the fraction `t` of it below `v`, and the image of `v`.
+    fn inside(&self, v: f64) -> (usize, f64, f64, f64) {
+        let n = self.x.len();
+        // A side has a few portals: a scan beats a binary search.
+        let k = self.x[1..n - 1].iter().take_while(|&&x| x <= v).count();
         let h = self.x[k + 1] - self.x[k];
         let t = (v - self.x[k]) / h;
         let (t2, t3) = (t * t, t * t * t);
@@ -125,11 +152,7 @@ impl MonotoneMap {
             + (t3 - 2.0 * t2 + t) * h * self.slope[k]
             + (-2.0 * t3 + 3.0 * t2) * self.y[k + 1]
             + (t3 - t2) * h * self.slope[k + 1];
-        let derivative = (6.0 * t2 - 6.0 * t) / h * self.y[k]
-            + (3.0 * t2 - 4.0 * t + 1.0) * self.slope[k]
-            + (-6.0 * t2 + 6.0 * t) / h * self.y[k + 1]
-            + (3.0 * t2 - 2.0 * t) * self.slope[k + 1];
-        (value, derivative)
+        (k, h, t, value)
     }
 }
 
@@ -142,10 +165,10 @@ enum SideMap {
 }
 
 impl SideMap {
-    fn eval(&self, v: f64) -> (f64, f64) {
+    fn value(&self, v: f64) -> f64 {
         match self {
-            SideMap::Shift(d) => (v + d, 1.0),
-            SideMap::Portals(m) => m.eval(v),
+            SideMap::Shift(d) => v + d,
+            SideMap::Portals(m) => m.value(v),
         }
     }
 }
@@ -158,6 +181,15 @@ struct Bend {
     below: f64,
     above: f64,
     /// Slope to add at the seam.
+    coefficient: f64,
+}
+
+/// A [`Bend`] as one piece applies it: its slope held back so that the
+/// piece cannot fold, and the reach of its weight above and below it.
+struct CappedBend {
+    at: f64,
+    above: f64,
+    below: f64,
     coefficient: f64,
 }
 
@@ -323,6 +355,27 @@ pub fn stitch(
         // Long edges are split first, so that a bend between their ends is seen.
         let max_step = (piece.width / 2.0).min(set.exemplar_height / 4.0).max(1e-9);
         let tolerance = tolerance.max(1e-9 * set.exemplar_height);
+        // Each height lies in at most two weights' supports: with each
+        // bend's slope across the band held to a quarter, `v` keeps
+        // increasing with the exemplar's height, so the map never folds
+        // material over itself (a fold splits or merges parts the plan
+        // counted). Worked out once per piece, not per point.
+        let capped = |bends: &[Bend]| -> Vec<CappedBend> {
+            bends
+                .iter()
+                .map(|b| {
+                    let support = (b.above - b.at).min(b.at - b.below).max(1e-12);
+                    let cap = MAX_FOLD_SLOPE * support / (radius.abs() * FALLOFF_PEAK).max(1e-12);
+                    CappedBend {
+                        at: b.at,
+                        above: (b.above - b.at).max(1e-12),
+                        below: (b.at - b.below).max(1e-12),
+                        coefficient: b.coefficient.clamp(-cap, cap),
+                    }
+                })
+                .collect()
+        };
+        let (left_capped, right_capped) = (capped(&left_bends[i]), capped(&right_bends[i]));
         let place = |p: DVec2| -> DVec2 {
             // Points on a cut must land exactly on the seam line, whatever
             // rounding the clipping left in them.
@@ -335,31 +388,23 @@ pub fn stitch(
             };
             let u = (1.0 - t) * u0 + t * u1;
             let h = smoothstep(t);
-            let (left, _) = left_maps[i].eval(p.y);
-            let (right, _) = right_maps[i].eval(p.y);
+            let left = left_maps[i].value(p.y);
+            let right = right_maps[i].value(p.y);
             let mut v = (1.0 - h) * left + h * right;
             let mut bend = 0.0;
-            for (bends, seam) in [(&left_bends[i], u0), (&right_bends[i], u1)] {
+            for (bends, seam) in [(&left_capped, u0), (&right_capped, u1)] {
                 let x = (u - seam).abs() / radius;
                 if x >= 1.0 {
                     continue;
                 }
                 let falloff = (1.0 - x) * (1.0 - x) * (1.0 + 2.0 * x);
                 for b in bends.iter() {
-                    // Each height lies in at most two weights' supports: with
-                    // each bend's slope across the band held to a quarter,
-                    // `v` keeps increasing with the exemplar's height, so
-                    // the map never folds material over itself (a fold
-                    // splits or merges parts the plan counted).
-                    let support = (b.above - b.at).min(b.at - b.below).max(1e-12);
-                    let cap = MAX_FOLD_SLOPE * support / (radius.abs() * FALLOFF_PEAK).max(1e-12);
-                    let coefficient = b.coefficient.clamp(-cap, cap);
                     let weight = if v >= b.at {
-                        (1.0 - (v - b.at) / (b.above - b.at).max(1e-12)).clamp(0.0, 1.0)
+                        (1.0 - (v - b.at) / b.above).clamp(0.0, 1.0)
                     } else {
-                        (1.0 - (b.at - v) / (b.at - b.below).max(1e-12)).clamp(0.0, 1.0)
+                        (1.0 - (b.at - v) / b.below).clamp(0.0, 1.0)
                     };
-                    bend += coefficient * (u - seam) * falloff * weight;
+                    bend += b.coefficient * (u - seam) * falloff * weight;
                 }
             }
             v += bend;
