@@ -2,7 +2,7 @@
 
 use glam::DVec2;
 
-use super::Curve;
+use super::{Curve, CurveCursor};
 use rayon::prelude::*;
 
 use crate::geom::{Outline, Polygon, Region, joined_without_union, refine_mapped_indexed, signed_area, union};
@@ -101,14 +101,16 @@ pub fn map_along_within(band_region: &Region, scale: f64, curve: &Curve, toleran
     };
     let step = (half).min(length / 50.0).max(1e-3);
     let closed = curve.is_closed();
-    let place = |p: DVec2| {
+    // Each ring's points come in order along it, so each ring's mapping
+    // follows the curve with a cursor of its own.
+    let place = |cursor: &CurveCursor, p: DVec2| {
         let mut u = p.x * scale;
         // The end of a loop is its start: the same point, to the last bit,
         // so that the closing seam welds.
         if closed && (u - length).abs() <= 1e-9 * length {
             u = 0.0;
         }
-        curve.map(u, p.y * scale * narrowing(u))
+        cursor.map(u, p.y * scale * narrowing(u))
     };
     // Points are added where the curve bends an edge away from its chord.
     // A loop's two ends are one line in the plane, where `place` puts the
@@ -126,7 +128,8 @@ pub fn map_along_within(band_region: &Region, scale: f64, curve: &Curve, toleran
         }
     };
     let outline = |(polygon, r): (usize, &Vec<DVec2>)| {
-        let (points, origins) = refine_mapped_indexed(r, place, step / scale, tolerance_mm);
+        let cursor = curve.cursor();
+        let (points, origins) = refine_mapped_indexed(r, |p| place(&cursor, p), step / scale, tolerance_mm);
         let mut lines = vec![None; points.len()];
         for (p, &i) in r.iter().zip(&origins) {
             lines[i] = line_of(p.x);

@@ -19,6 +19,40 @@ pub struct Curve {
     closed: bool,
 }
 
+/// How many segments [`Curve::locate_near`] steps from its hint before it
+/// searches instead.
+const NEAR_STEPS: usize = 4;
+
+/// [`Curve::map`] for points that come in order along the curve (an
+/// outline's, say): each starts from the segment of the one before, which
+/// spares a search over the whole curve for most. Same points to the last
+/// bit.
+///
+/// ```
+/// use glam::DVec2;
+/// use tracery_core::curve::Curve;
+/// let curve = Curve::circle(10.0).unwrap();
+/// let cursor = curve.cursor();
+/// for k in 0..100 {
+///     let (u, v) = (k as f64 * 0.7, 0.5);
+///     assert_eq!(cursor.map(u, v), curve.map(u, v));
+/// }
+/// ```
+#[derive(Debug)]
+pub struct CurveCursor<'a> {
+    curve: &'a Curve,
+    segment: std::cell::Cell<Option<usize>>,
+}
+
+impl CurveCursor<'_> {
+    /// The point at `(u, v)` of band space, as [`Curve::map`] gives it.
+    pub fn map(&self, u: f64, v: f64) -> DVec2 {
+        let at = self.curve.locate_near(u, self.segment.get());
+        self.segment.set(Some(at.0));
+        self.curve.map_at(at, v)
+    }
+}
+
 /// A vertex that turns by more than this is a corner that
 /// [`Curve::with_rounded_corners`] rounds, degrees.
 pub const CORNER_ANGLE_DEG: f64 = 5.0;
@@ -310,9 +344,30 @@ impl Curve {
 
     /// Segment index and fraction for arc length `u` (wrapped on loops, clamped otherwise).
     fn locate(&self, u: f64) -> (usize, f64) {
+        self.locate_near(u, None)
+    }
+
+    /// [`Self::locate`], trying segment `near` and the few after and before
+    /// it first: the answer is the same, found without a search when
+    /// successive calls ask about nearby arc lengths.
+    fn locate_near(&self, u: f64, near: Option<usize>) -> (usize, f64) {
         let length = self.length();
         let u = if self.closed { u.rem_euclid(length) } else { u.clamp(0.0, length) };
-        let k = self.arc.partition_point(|&a| a <= u).clamp(1, self.arc.len() - 1) - 1;
+        // The last segment whose start is at or before `u` (the first or the
+        // last segment for `u` outside).
+        let last = self.arc.len() - 2;
+        let fits = |k: usize| (k == 0 || self.arc[k] <= u) && (k == last || self.arc[k + 1] > u);
+        let walked = near.and_then(|k| {
+            let mut k = k.min(last);
+            for _ in 0..NEAR_STEPS {
+                if fits(k) {
+                    return Some(k);
+                }
+                k = if self.arc[k] <= u { k + 1 } else { k - 1 };
+            }
+            None
+        });
+        let k = walked.unwrap_or_else(|| self.arc.partition_point(|&a| a <= u).clamp(1, self.arc.len() - 1) - 1);
         let span = self.arc[k + 1] - self.arc[k];
         (k, if span > 0.0 { (u - self.arc[k]) / span } else { 0.0 })
     }
@@ -375,9 +430,18 @@ impl Curve {
 
     /// The point at `(u, v)` of band space: `u` along the curve, `v` along the left normal.
     pub fn map(&self, u: f64, v: f64) -> DVec2 {
+        self.map_at(self.locate(u), v)
+    }
+
+    /// The point at `v` along the left normal from segment `k`, fraction `t`.
+    fn map_at(&self, (k, t): (usize, f64), v: f64) -> DVec2 {
         // One search for the segment serves the point and the normal.
-        let (k, t) = self.locate(u);
         self.points[k].lerp(self.points[k + 1], t) + self.tangent_at((k, t)).perp() * v
+    }
+
+    /// A [`CurveCursor`] on this curve, for mapping points in order along it.
+    pub fn cursor(&self) -> CurveCursor<'_> {
+        CurveCursor { curve: self, segment: std::cell::Cell::new(None) }
     }
 
     /// Winding number of the (closed) curve around `p`.
@@ -422,4 +486,29 @@ fn chaikin(points: &[DVec2], closed: bool) -> Vec<DVec2> {
         out.push(points[n - 1]);
     }
     out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_cursor_maps_every_point_as_the_curve_does() {
+        // An uneven polyline, open and closed, and arc lengths that step
+        // along, jump back and forth, and fall outside the curve.
+        let points: Vec<DVec2> =
+            (0..300).map(|k| DVec2::new(k as f64 + 0.3 * (k as f64).sin(), (0.05 * k as f64).cos() * 8.0)).collect();
+        for closed in [false, true] {
+            let curve = Curve::from_polyline(&points, closed).unwrap();
+            let cursor = curve.cursor();
+            let length = curve.length();
+            let mut random = crate::random::SplitMix64::new(7);
+            let mut u = 0.0;
+            for k in 0..5000 {
+                u = if k % 50 == 0 { (random.next_unit() * 1.4 - 0.2) * length } else { u + 0.37 };
+                let v = random.next_unit() - 0.5;
+                assert_eq!(cursor.map(u, v), curve.map(u, v), "closed {closed}, u {u}");
+            }
+        }
+    }
 }
