@@ -15,7 +15,7 @@
 use glam::DVec2;
 use rustc_hash::FxHashMap;
 
-use super::{Polygon, Region, meeting_rings, rings_meet, signed_area, union};
+use super::{Polygon, Region, meeting_rings, signed_area, union};
 use crate::disjoint_sets::DisjointSets;
 
 /// One outline: the polygon it came from, its points, and for each point
@@ -196,10 +196,10 @@ pub(crate) fn joined_without_union(polygons: usize, rings: &[Outline]) -> Option
 /// union of the few polygons at it, not of the whole pattern.
 fn resolved(polygons: Vec<Polygon>) -> Region {
     let all: Vec<&Vec<DVec2>> = polygons.iter().flat_map(Polygon::rings).collect();
-    if !rings_meet(&all) {
+    let meeting = meeting_rings(&all);
+    if !meeting.contains(&true) {
         return Region { polygons };
     }
-    let meeting = meeting_rings(&all);
     let mut ring = 0;
     let (mut apart, mut crossed) = (Vec::new(), Vec::new());
     for polygon in polygons {

@@ -34,8 +34,7 @@ const EDGE_BITS: u32 = 64 - 2 * CELL_BITS;
 pub fn rings_meet<R: AsRef<[DVec2]> + Sync>(rings: &[R]) -> bool {
     match EdgeGrid::new(rings) {
         Some(grid) => {
-            let (low, high) = grid.halves();
-            let (a, b) = rayon::join(|| grid.meeting_in(low, |_, _| true), || grid.meeting_in(high, |_, _| true));
+            let (a, b) = grid.on_halves(|entries| grid.meeting_in(entries, |_, _| true));
             a || b
         }
         None => super::crossing_rings(rings).contains(&true),
@@ -66,8 +65,7 @@ pub fn meeting_rings<R: AsRef<[DVec2]> + Sync>(rings: &[R]) -> Vec<bool> {
         });
         meeting
     };
-    let (low, high) = grid.halves();
-    let (a, b) = rayon::join(|| meeting_in(low), || meeting_in(high));
+    let (a, b) = grid.on_halves(meeting_in);
     a.iter().zip(b).map(|(&a, b)| a || b).collect()
 }
 
@@ -161,14 +159,16 @@ impl EdgeGrid {
         Some(EdgeGrid { ends, next, first_edge, entries })
     }
 
-    /// The entries in two halves split between cells, one per core.
-    fn halves(&self) -> (&[u64], &[u64]) {
+    /// `work` on the entries cut in two halves between cells, one half
+    /// per core.
+    fn on_halves<T: Send>(&self, work: impl Fn(&[u64]) -> T + Sync) -> (T, T) {
         let entries = &self.entries;
         let mut half = entries.len() / 2;
         while half > 0 && half < entries.len() && cell_of(entries[half]) == cell_of(entries[half - 1]) {
             half += 1;
         }
-        entries.split_at(half)
+        let (low, high) = entries.split_at(half);
+        rayon::join(|| work(low), || work(high))
     }
 
     /// Calls `found` with every two edges that share a cell of `entries`
@@ -255,9 +255,10 @@ mod tests {
         let mut meeting = 0;
         for seed in 0..400 {
             let rings = random_rings(seed);
-            let expected = crossing_rings(&rings).contains(&true);
+            let crossing = crossing_rings(&rings);
+            let expected = crossing.contains(&true);
             assert_eq!(rings_meet(&rings), expected, "seed {seed}");
-            assert_eq!(meeting_rings(&rings), crossing_rings(&rings), "seed {seed}");
+            assert_eq!(meeting_rings(&rings), crossing, "seed {seed}");
             meeting += usize::from(expected);
         }
         // Both answers are common, so the comparison means something.

@@ -110,14 +110,9 @@ impl MonotoneMap {
     }
 
     fn eval(&self, v: f64) -> (f64, f64) {
-        let n = self.x.len();
-        if v <= self.x[0] {
-            return (self.y[0] + (v - self.x[0]), 1.0);
-        }
-        if v >= self.x[n - 1] {
-            return (self.y[n - 1] + (v - self.x[n - 1]), 1.0);
-        }
-        let (k, h, t, value) = self.inside(v);
+        let Some((k, h, t, value)) = self.inside(v) else {
+            return (self.beyond(v), 1.0);
+        };
         let t2 = t * t;
         let derivative = (6.0 * t2 - 6.0 * t) / h * self.y[k]
             + (3.0 * t2 - 4.0 * t + 1.0) * self.slope[k]
@@ -129,20 +124,23 @@ impl MonotoneMap {
     /// The image of `v`, as [`Self::eval`] gives it, without the derivative:
     /// what placing each point needs.
     fn value(&self, v: f64) -> f64 {
+        self.inside(v).map_or_else(|| self.beyond(v), |(.., value)| value)
+    }
+
+    /// The image of `v` at or beyond the lowest or highest height: a shift.
+    fn beyond(&self, v: f64) -> f64 {
         let n = self.x.len();
-        if v <= self.x[0] {
-            self.y[0] + (v - self.x[0])
-        } else if v >= self.x[n - 1] {
-            self.y[n - 1] + (v - self.x[n - 1])
-        } else {
-            self.inside(v).3
-        }
+        if v <= self.x[0] { self.y[0] + (v - self.x[0]) } else { self.y[n - 1] + (v - self.x[n - 1]) }
     }
 
     /// For `v` strictly inside the heights: the interval `k`, its height
-    /// `h`, the fraction `t` of it below `v`, and the image of `v`.
-    fn inside(&self, v: f64) -> (usize, f64, f64, f64) {
+    /// `h`, the fraction `t` of it below `v`, and the image of `v`. `None`
+    /// at or beyond the lowest or highest height.
+    fn inside(&self, v: f64) -> Option<(usize, f64, f64, f64)> {
         let n = self.x.len();
+        if v <= self.x[0] || v >= self.x[n - 1] {
+            return None;
+        }
         // A side has a few portals: a scan beats a binary search.
         let k = self.x[1..n - 1].iter().take_while(|&&x| x <= v).count();
         let h = self.x[k + 1] - self.x[k];
@@ -152,7 +150,7 @@ impl MonotoneMap {
             + (t3 - 2.0 * t2 + t) * h * self.slope[k]
             + (-2.0 * t3 + 3.0 * t2) * self.y[k + 1]
             + (t3 - t2) * h * self.slope[k + 1];
-        (k, h, t, value)
+        Some((k, h, t, value))
     }
 }
 
