@@ -117,6 +117,9 @@ struct Run {
     pieces: usize,
     time_ms: f64,
     states: usize,
+    /// The beam width where the exact search passed the state cap and the
+    /// bounded search answered.
+    bounded: Option<usize>,
     /// Milliseconds in analysis, solve, geometry and meshing.
     stages: String,
     /// The solver's matching cost and autocorrelation, to compare with the
@@ -175,6 +178,7 @@ fn run_one(
         pieces: 0,
         time_ms: 0.0,
         states: 0,
+        bounded: None,
         stages: String::new(),
         matching: 0.0,
         auto: 0.0,
@@ -213,6 +217,7 @@ fn run_one(
         let _ = std::fs::write(dir.join(name), region_to_svg(&synthesis.planar.region));
     }
     run.states = s.states;
+    run.bounded = s.bounded;
     run.matching = s.matching_cost;
     run.auto = s.autocorrelation;
     run.stages = ["analysis", "solve", "geometry"]
@@ -294,8 +299,8 @@ fn percentile(sorted: &[f64], q: f64) -> f64 {
 
 fn summary(runs: &[Run], curves: &[String]) -> String {
     let mut out = String::from(
-        "| curve | runs | answered | exact | none | cap | mesh | error | drift max | seam max ° | stretch p95 / max | shear p95 / max ° | period < ⅓ | of which avoidable | p50 ms | p95 ms | max ms |\n\
-         |---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n",
+        "| curve | runs | answered | exact | none | cap | past cap | mesh | error | drift max | seam max ° | stretch p95 / max | shear p95 / max ° | period < ⅓ | of which avoidable | p50 ms | p95 ms | max ms |\n\
+         |---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n",
     );
     let mut rows: Vec<(String, Vec<&Run>)> =
         curves.iter().map(|c| (c.clone(), runs.iter().filter(|r| &r.curve == c).collect::<Vec<_>>())).collect();
@@ -313,12 +318,13 @@ fn summary(runs: &[Run], curves: &[String]) -> String {
         };
         let (stretches, shears) = (sorted(|r| r.stretch), sorted(|r| r.shear_deg));
         out += &format!(
-            "| {name} | {} | {} | {} | {} | {} | {} | {} | {:.2} | {:.1} | {:.2} / {:.2} | {:.1} / {:.1} | {} | {} | {:.1} | {:.1} | {:.1} |\n",
+            "| {name} | {} | {} | {} | {} | {} | {} | {} | {} | {:.2} | {:.1} | {:.2} / {:.2} | {:.1} / {:.1} | {} | {} | {:.1} | {:.1} | {:.1} |\n",
             rs.len(),
             answered.len(),
             answered.iter().filter(|r| r.exact).count(),
             count("none"),
             count("cap"),
+            answered.iter().filter(|r| r.bounded.is_some()).count(),
             count("mesh"),
             count("error"),
             answered.iter().map(|r| r.drift).fold(0.0, f64::max),
@@ -357,7 +363,7 @@ fn main() {
         .collect();
     let mut runs = Vec::new();
     let mut csv = String::from(
-        "ornament,curve,target,status,exact,drift,period,repeat,seam_deg,stretch,shear_deg,pieces,time_ms,states,stages,matching,auto,avoidable,reason\n",
+        "ornament,curve,target,status,exact,drift,period,repeat,seam_deg,stretch,shear_deg,pieces,time_ms,states,bounded,stages,matching,auto,avoidable,reason\n",
     );
     let started = Instant::now();
     for file in &files {
@@ -376,7 +382,7 @@ fn main() {
                     r.avoidable = probe.status == "ok" && !short_period(&probe);
                 }
                 csv += &format!(
-                    "{},{},{},{},{},{:.3},{:.3},{:.3},{:.2},{:.3},{:.2},{},{:.2},{},{},{:.4},{:.2},{},\"{}\"\n",
+                    "{},{},{},{},{},{:.3},{:.3},{:.3},{:.2},{:.3},{:.2},{},{:.2},{},{},{},{:.4},{:.2},{},\"{}\"\n",
                     r.ornament,
                     r.curve,
                     r.target,
@@ -391,6 +397,7 @@ fn main() {
                     r.pieces,
                     r.time_ms,
                     r.states,
+                    r.bounded.map_or(String::new(), |w| w.to_string()),
                     r.stages,
                     r.matching,
                     r.auto,
