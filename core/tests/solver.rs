@@ -433,6 +433,61 @@ fn a_bounded_search_answers_past_the_cap_close_to_exact() {
     assert!(worst_gap < 0.3, "worst gap {worst_gap}");
 }
 
+/// A search projects where its states will end and stops early when it is
+/// bound to pass the cap on its own. A search that fits the cap with a
+/// fifth to spare must never be stopped: it answers exactly, as without
+/// the projection.
+#[test]
+fn a_search_that_fits_the_cap_is_never_stopped_early() {
+    let mut compared = 0;
+    for name in BUILTIN_NAMES {
+        let set = PieceSet::new(&builtin(name).unwrap(), &SliceOptions::default()).unwrap();
+        for curve in [CurveKind::Open, CurveKind::Closed] {
+            for components in [Target::Exactly(1), Target::Exactly(2)] {
+                let mut options = SolveOptions::new(60.0 * set.exemplar_width / set.len() as f64);
+                options.curve = curve;
+                options.components = components;
+                options.closed_pattern = curve == CurveKind::Closed;
+                options.band_height = 1.2 * set.exemplar_height;
+                let context = format!("{name} {curve:?} {components:?}");
+                let Ok(exact) = solve(&set, &options, &Control::default()) else { continue };
+                assert_eq!(exact.bounded, None, "{context}");
+                // Each running search takes states from the cap a thousand at a time.
+                options.max_states = exact.states * 6 / 5 + 4096;
+                let again = solve(&set, &options, &Control::default()).unwrap_or_else(|e| panic!("{context}: {e}"));
+                assert_eq!(again.bounded, None, "{context}: stopped early with a cap of {}", options.max_states);
+                assert_eq!(again.pieces, exact.pieces, "{context}");
+                compared += 1;
+            }
+        }
+    }
+    assert!(compared >= 16, "only {compared} instances");
+}
+
+/// A search bound to pass the cap on its own stops once its growth shows
+/// it (from a fifth of its lengths on), not when it meets the cap: with
+/// the cap at half of what the search needs, it would meet the cap about
+/// half way through its lengths. The bounded search then answers.
+#[test]
+fn a_search_bound_to_pass_the_cap_stops_early() {
+    let set = PieceSet::new(&builtin("lace").unwrap(), &SliceOptions::default()).unwrap();
+    let mut options = SolveOptions::new(60.0 * set.exemplar_width / set.len() as f64);
+    options.band_height = 1.2 * set.exemplar_height;
+    let exact = solve(&set, &options, &Control::default()).unwrap();
+    options.max_states = exact.states / 2;
+    let seen = Mutex::new(Vec::new());
+    let record = |f: f32| seen.lock().unwrap().push(f);
+    let bounded = solve(&set, &options, &Control { cancel: None, progress: Some(&record) }).unwrap();
+    assert!(bounded.bounded.is_some(), "{} states needed, cap {}", exact.states, options.max_states);
+    // The bounded search reports its progress from zero again.
+    let seen = seen.into_inner().unwrap();
+    let restart = seen.windows(2).position(|w| w[1] < w[0]).expect("a second search") + 1;
+    let reached = seen[..restart].iter().copied().fold(0.0, f32::max);
+    eprintln!("{} states needed, cap {}: the exact search stopped at {reached:.2}", exact.states, options.max_states);
+    assert!(restart >= 3, "too few reports to tell: {seen:?}");
+    assert!(reached < 0.35, "the exact search went on to {reached}");
+}
+
 /// With any number of parts and holes the search first leaves the
 /// descriptors out. On a loop that must run all around, what it finds is
 /// then checked: here the exemplar's own order, whose seams all fit, is two

@@ -66,6 +66,10 @@ pub(super) struct Problem<'a> {
     /// finished pattern is checked afterwards ([`search_all`]).
     topology: Topology,
     states: &'a AtomicUsize,
+    /// Set once a search has passed the cap (or is bound to): the others
+    /// of the same window stop, since the window's answer is then the cap
+    /// error whatever they find.
+    capped: &'a AtomicBool,
     created: &'a AtomicUsize,
     work_done: &'a AtomicUsize,
     work_total: usize,
@@ -172,6 +176,9 @@ pub(super) struct Search<'p> {
     best: Option<(f64, u32)>,
     /// The least any finish costs after each piece and length.
     bound: CompletionBound,
+    /// States created before each key was expanded, from the first:
+    /// how fast the search grows.
+    growth: Vec<usize>,
 }
 
 impl<'p> Search<'p> {
@@ -198,6 +205,7 @@ impl<'p> Search<'p> {
             reserved: 0,
             buckets: (0..ring).map(|_| Bucket::default()).collect(),
             best: None,
+            growth: Vec::new(),
         }
     }
 
@@ -274,6 +282,9 @@ impl<'p> Search<'p> {
             }
             problem.control.check()?;
             problem.report_progress();
+            if problem.capped.load(Ordering::Relaxed) || self.bound_to_pass_cap(key, first_key) {
+                return Err(self.passed_cap());
+            }
             let slot = key as usize % self.buckets.len();
             open.clear();
             autos.clear();
@@ -464,6 +475,7 @@ pub(super) fn search_with(
         leave_out_what_loops_cannot_cross(set, &mut cost);
     }
     let states = AtomicUsize::new(0);
+    let capped = AtomicBool::new(false);
     let bounded = AtomicBool::new(false);
     let found_any = AtomicBool::new(false);
     let created = AtomicUsize::new(0);
@@ -513,6 +525,7 @@ pub(super) fn search_with(
         found_any: &found_any,
         topology,
         states: &states,
+        capped: &capped,
         created: &created,
         work_done: &work_done,
         work_total,
