@@ -66,6 +66,9 @@ pub(super) struct Problem<'a> {
     /// finished pattern is checked afterwards ([`search_all`]).
     topology: Topology,
     states: &'a AtomicUsize,
+    /// Bytes of room for open states held by the searches running at once,
+    /// against [`cap::room_budget`].
+    room: &'a AtomicUsize,
     /// Set once a search has passed the cap (or is bound to): the others
     /// of the same window stop, since the window's answer is then the cap
     /// error whatever they find.
@@ -146,6 +149,7 @@ impl Problem<'_> {
         let mut search = Search::new(self, starts, min_rank, window);
         let result = search.run();
         self.states.fetch_sub(search.counted + search.reserved, Ordering::Relaxed);
+        self.room.fetch_sub(search.held_room, Ordering::Relaxed);
         self.created.fetch_add(search.counted, Ordering::Relaxed);
         result?;
         Ok(search.best.map(|(total, end)| search.backtrack(end, total)))
@@ -170,6 +174,11 @@ pub(super) struct Search<'p> {
     counted: usize,
     /// States taken from the cap's shared count but not yet created.
     reserved: usize,
+    /// Bytes of one open state's room ([`cap::open_state_bytes`]); none in
+    /// the bounded search, whose beam keeps that room small.
+    open_bytes: usize,
+    /// Bytes this search holds of the shared room.
+    held_room: usize,
     /// States by length, modulo the widest piece: only lengths within one
     /// piece of the current one are ever open, and their tables are reused.
     buckets: Vec<Bucket>,
@@ -203,6 +212,8 @@ impl<'p> Search<'p> {
             arena: Vec::new(),
             counted: 0,
             reserved: 0,
+            open_bytes: if problem.beam.is_none() { cap::open_state_bytes(problem.options.variety > 0.0) } else { 0 },
+            held_room: 0,
             buckets: (0..ring).map(|_| Bucket::default()).collect(),
             best: None,
             growth: Vec::new(),
@@ -252,7 +263,10 @@ impl<'p> Search<'p> {
         }
         self.reserved -= 1;
         self.counted += 1;
-        self.buckets[slot].insert(key, state, variety.then(correlation));
+        let grown = self.buckets[slot].insert(key, state, variety.then(correlation));
+        if grown > 0 {
+            self.make_room(grown * self.open_bytes)?;
+        }
         Ok(())
     }
 
@@ -475,6 +489,7 @@ pub(super) fn search_with(
         leave_out_what_loops_cannot_cross(set, &mut cost);
     }
     let states = AtomicUsize::new(0);
+    let room = AtomicUsize::new(0);
     let capped = AtomicBool::new(false);
     let bounded = AtomicBool::new(false);
     let found_any = AtomicBool::new(false);
@@ -525,6 +540,7 @@ pub(super) fn search_with(
         found_any: &found_any,
         topology,
         states: &states,
+        room: &room,
         capped: &capped,
         created: &created,
         work_done: &work_done,

@@ -150,7 +150,10 @@ impl Bucket {
         table[at] = (key, index);
     }
 
-    pub(super) fn insert(&mut self, key: usize, state: State, auto: Option<Autocorrelation>) {
+    /// Adds a state under `key`; returns by how many states the room for
+    /// open states grew.
+    pub(super) fn insert(&mut self, key: usize, state: State, auto: Option<Autocorrelation>) -> usize {
+        let room = self.open.capacity();
         debug_assert!(key < NO_PARENT as usize, "state keys fit in 32 bits");
         if !self.hashed && key >= DIRECT_KEYS {
             self.hashed = true;
@@ -175,6 +178,7 @@ impl Bucket {
         self.keys.push(key as u32);
         self.open.push(state);
         self.auto.extend(auto);
+        self.open.capacity() - room
     }
 
     /// Moves the states out, leaving the bucket empty for reuse.

@@ -2,8 +2,9 @@
 
 use std::sync::atomic::Ordering;
 
-use super::Search;
+use super::{Search, State};
 use crate::control::StateCap;
+use crate::vector_brush::Autocorrelation;
 use crate::vector_brush::SolveError;
 use crate::vector_brush::solver::STATE_BYTES;
 
@@ -28,6 +29,18 @@ impl Search<'_> {
             problem.states.fetch_sub(batch, Ordering::Relaxed);
         }
         Err(self.passed_cap())
+    }
+
+    /// Takes `bytes` more of the room for open states shared by the
+    /// searches running at once; the cap error where that passes
+    /// [`room_budget`]. The room, once made, stays for the whole search
+    /// (each length's table is reused), so it is held until the search
+    /// ends.
+    pub(super) fn make_room(&mut self, bytes: usize) -> Result<(), SolveError> {
+        let problem = self.problem;
+        self.held_room += bytes;
+        let held = problem.room.fetch_add(bytes, Ordering::Relaxed) + bytes;
+        if held > room_budget(problem.options.max_states) { Err(self.passed_cap()) } else { Ok(()) }
     }
 
     /// The cap error, after telling the other searches of the window to stop.
@@ -63,6 +76,26 @@ impl Search<'_> {
         let projected = self.counted as f64 + rate * (total - done) as f64;
         projected > PROJECTED_MARGIN * problem.options.max_states as f64
     }
+}
+
+/// The bytes of the room for one open state: the whole state, with its
+/// variety history where the variety term is on, its key and two slots of
+/// its length's table.
+pub(super) fn open_state_bytes(variety: bool) -> usize {
+    let history = if variety { std::mem::size_of::<Autocorrelation>() } else { 0 };
+    std::mem::size_of::<State>() + history + 4 + 2 * 8
+}
+
+/// The room for open states the exact searches running at once may hold,
+/// bytes: a third of the cap's, beside it (16 MB beside the 48 MB of 2 M
+/// states). [`STATE_BYTES`] was measured on searches of a few thousand
+/// open states per length, where that room is a small part of a state's
+/// share; a loop whose descriptors run to tens of thousands
+/// (`vectorian105` round `circle:40`, any number of parts: 56 k
+/// descriptors, 60 k open states per length) held 50 MB of it, and 106–117
+/// MB in all, when it met the cap of states.
+pub(super) fn room_budget(max_states: usize) -> usize {
+    max_states.saturating_mul(STATE_BYTES) / 2
 }
 
 /// The share of a search's lengths after which its growth is projected
