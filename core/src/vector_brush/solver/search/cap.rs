@@ -87,8 +87,9 @@ pub(super) fn open_state_bytes(variety: bool) -> usize {
 }
 
 /// The room for open states the exact searches running at once may hold,
-/// bytes: a third of the cap's, beside it (16 MB beside the 48 MB of 2 M
-/// states). [`STATE_BYTES`] was measured on searches of a few thousand
+/// bytes: half the cap's, beside it (24 MB beside the 48 MB of 2 M states;
+/// a third also sent `pgfhan61`'s loops with two parts, 46–64 MB in all,
+/// to the bounded search). [`STATE_BYTES`] was measured on searches of a few thousand
 /// open states per length, where that room is a small part of a state's
 /// share; a loop whose descriptors run to tens of thousands
 /// (`vectorian105` round `circle:40`, any number of parts: 56 k
