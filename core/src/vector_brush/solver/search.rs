@@ -264,8 +264,10 @@ impl<'p> Search<'p> {
         self.reserved -= 1;
         self.counted += 1;
         let grown = self.buckets[slot].insert(key, state, variety.then(correlation));
-        if grown > 0 {
-            self.make_room(grown * self.open_bytes)?;
+        // The bounded search counts no room (`open_bytes` is zero).
+        let bytes = grown * self.open_bytes;
+        if bytes > 0 {
+            self.make_room(bytes)?;
         }
         Ok(())
     }

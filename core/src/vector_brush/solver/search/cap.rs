@@ -63,10 +63,10 @@ impl Search<'_> {
     /// is not projected.
     pub(super) fn bound_to_pass_cap(&mut self, key: u32, first_key: u32) -> bool {
         let problem = self.problem;
-        self.growth.push(self.counted);
         if problem.beam.is_some() || problem.stop_at_first {
             return false;
         }
+        self.growth.push(self.counted);
         let (done, total) = ((key - first_key) as usize, (self.max_key - first_key) as usize + 1);
         if done < MIN_PROJECTED_LENGTHS || (done as f64) < PROJECT_AFTER * total as f64 {
             return false;
