@@ -19,7 +19,7 @@ use finish::finish;
 use topology::leave_out_what_loops_cannot_cross;
 pub(super) use topology::{Topology, search_all};
 
-use super::state::{Bucket, Interner, LengthGrid, NO_PARENT, PRUNED, State, Trace, UNKNOWN};
+use super::state::{Arena, Bucket, Interner, LengthGrid, NO_PARENT, PRUNED, State, UNKNOWN};
 use super::{CurveKind, Goal, Solution, SolveOptions, tolerance_levels};
 use crate::control::Control;
 use crate::random::splitmix64;
@@ -169,7 +169,7 @@ pub(super) struct Search<'p> {
     compatible: Vec<Vec<usize>>,
     interner: Interner,
     /// Expanded states, for backtracking.
-    arena: Vec<Trace>,
+    arena: Arena,
     /// States this search has created, all counted against the cap.
     counted: usize,
     /// States taken from the cap's shared count but not yet created.
@@ -209,7 +209,7 @@ impl<'p> Search<'p> {
             max_key: problem.grid.key(window.1),
             compatible,
             interner: Interner::new(n),
-            arena: Vec::new(),
+            arena: Arena::default(),
             counted: 0,
             reserved: 0,
             open_bytes: if problem.beam.is_none() { cap::open_state_bytes(problem.options.variety > 0.0) } else { 0 },
@@ -318,8 +318,7 @@ impl<'p> Search<'p> {
                 if !self.promising(state.cost + floor, a, state.length) {
                     continue;
                 }
-                let index = self.arena.len() as u32;
-                self.arena.push(Trace { parent: state.parent, delta: state.delta, piece: state.piece });
+                let index = self.arena.push(state.parent, state.piece);
                 if state.length >= self.window.0 {
                     self.consider_end(state, &auto, index);
                 }
@@ -403,9 +402,8 @@ impl<'p> Search<'p> {
     #[inline]
     fn follow(&mut self, state: &State, parent: u32, key: u32, b: usize) -> Option<State> {
         let problem = self.problem;
-        let (a, n) = (usize::from(state.piece), problem.n());
-        let raw = state.delta * problem.keep[a * n + b] + problem.tau[a * n + b] as f32;
-        let (delta, held_back) = problem.hold_in_band(raw, b)?;
+        let a = usize::from(state.piece);
+        let (delta, held_back) = problem.offset_after(state.delta, a, b)?;
         let descriptor = problem.join(&mut self.interner, state.descriptor, b);
         if descriptor == PRUNED {
             return None;
@@ -421,17 +419,8 @@ impl<'p> Search<'p> {
     }
 
     fn backtrack(&self, end: u32, total: f64) -> Found {
-        let mut pieces = Vec::new();
-        let mut offsets = Vec::new();
-        let mut i = end;
-        while i != NO_PARENT {
-            let s = &self.arena[i as usize];
-            pieces.push(s.piece as usize);
-            offsets.push(f64::from(s.delta));
-            i = s.parent;
-        }
-        pieces.reverse();
-        offsets.reverse();
+        let pieces = self.arena.pieces_to(end);
+        let offsets = self.problem.offsets_of(&pieces);
         Found { total, pieces, offsets }
     }
 }

@@ -76,14 +76,46 @@ pub(super) struct State {
     pub(super) piece: u16,
 }
 
-/// What an expanded state leaves behind: all backtracking needs. Only the
-/// states of the few open lengths are held whole (with their variety
-/// history), so memory grows by 12 bytes per state, not by a whole state.
-#[derive(Clone, Copy)]
-pub(super) struct Trace {
-    pub(super) parent: u32,
-    pub(super) delta: f32,
-    pub(super) piece: u16,
+/// What expanded states leave behind: all backtracking needs, the parent
+/// and the piece of each, in two arrays (6 bytes a state, where one array
+/// of `(parent, offset, piece)` took 12). The offsets are not kept: each
+/// follows from the pieces before it ([`super::search`] replays them), so
+/// only the states of the few open lengths are held whole.
+#[derive(Default)]
+pub(super) struct Arena {
+    parents: Vec<u32>,
+    pieces: Vec<u16>,
+}
+
+impl Arena {
+    pub(super) fn len(&self) -> usize {
+        self.parents.len()
+    }
+
+    /// Records an expanded state; returns its index.
+    pub(super) fn push(&mut self, parent: u32, piece: u16) -> u32 {
+        let index = self.parents.len() as u32;
+        self.parents.push(parent);
+        self.pieces.push(piece);
+        index
+    }
+
+    pub(super) fn truncate(&mut self, len: usize) {
+        self.parents.truncate(len);
+        self.pieces.truncate(len);
+    }
+
+    /// The pieces from the first to the state at `end`.
+    pub(super) fn pieces_to(&self, end: u32) -> Vec<usize> {
+        let mut pieces = Vec::new();
+        let mut i = end;
+        while i != NO_PARENT {
+            pieces.push(usize::from(self.pieces[i as usize]));
+            i = self.parents[i as usize];
+        }
+        pieces.reverse();
+        pieces
+    }
 }
 
 /// The open states of one length, found by `descriptor × pieces + piece`.

@@ -24,6 +24,29 @@ impl Problem<'_> {
         Some((raw.clamp(-allowance, allowance), self.misalignment_cost(held)))
     }
 
+    /// Where piece `b` goes after piece `a` placed at `delta`, and what
+    /// holding it in the band costs ([`Self::hold_in_band`]).
+    #[inline]
+    pub(super) fn offset_after(&self, delta: f32, a: usize, b: usize) -> Option<(f32, f64)> {
+        let seam = a * self.n() + b;
+        self.hold_in_band(delta * self.keep[seam] + self.tau[seam] as f32, b)
+    }
+
+    /// The offsets of a sequence the search found, replayed from its
+    /// pieces as the search placed them (the first on the axis): the
+    /// search keeps no offsets past the open lengths.
+    pub(super) fn offsets_of(&self, pieces: &[usize]) -> Vec<f64> {
+        let mut delta = 0.0f32;
+        let mut offsets = Vec::with_capacity(pieces.len());
+        offsets.push(0.0);
+        for seam in pieces.windows(2) {
+            // Always placed: the search placed every piece it kept.
+            delta = self.offset_after(delta, seam[0], seam[1]).map_or(delta, |(placed, _)| placed);
+            offsets.push(f64::from(delta));
+        }
+        offsets
+    }
+
     /// What a seam pays when its pieces sit `by` off their best alignment:
     /// moving every endpoint by `by` adds exactly `(by / H)²` to the pair's
     /// mean squared mismatch, `τ` being its least-squares alignment.

@@ -4,7 +4,7 @@
 
 use std::sync::atomic::Ordering;
 
-use super::{CurveKind, NO_PARENT, Search, State, Trace};
+use super::{CurveKind, NO_PARENT, Search, State};
 use crate::vector_brush::{Autocorrelation, SolveError};
 
 impl Search<'_> {
@@ -58,7 +58,7 @@ impl Search<'_> {
                 return Ok(None);
             };
             // Chain states live in the arena only, for backtracking.
-            self.arena.push(Trace { parent: state.parent, delta: state.delta, piece: state.piece });
+            self.arena.push(state.parent, state.piece);
             state = next;
             correlation = correlation.push(b, &problem.similarity);
         }
