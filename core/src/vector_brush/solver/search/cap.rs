@@ -87,16 +87,17 @@ pub(super) fn open_state_bytes(variety: bool) -> usize {
 }
 
 /// The room for open states the exact searches running at once may hold,
-/// bytes: half the cap's, beside it (24 MB beside the 48 MB of 2 M states;
-/// a third also sent `pgfhan61`'s loops with two parts, 46–64 MB in all,
-/// to the bounded search). [`STATE_BYTES`] was measured on searches of a few thousand
-/// open states per length, where that room is a small part of a state's
-/// share; a loop whose descriptors run to tens of thousands
+/// bytes: 13/16 of the cap's, beside it (26 MB beside the 32 MB of the
+/// default 4 M states, 63 MB with what the process holds before the
+/// search). The largest exact search of the corpus needs 25 MB of it
+/// (`vectorian168` round `circle:40`, two parts). Open states are held
+/// whole, about 220 bytes with their variety history, where an expanded
+/// one leaves 6: a loop whose descriptors run to tens of thousands
 /// (`vectorian105` round `circle:40`, any number of parts: 56 k
-/// descriptors, 60 k open states per length) held 50 MB of it, and 106–117
-/// MB in all, when it met the cap of states.
+/// descriptors, 60 k open states per length) held 50 MB of room, and
+/// 106–117 MB in all, when only states were counted.
 pub(super) fn room_budget(max_states: usize) -> usize {
-    max_states.saturating_mul(STATE_BYTES) / 2
+    max_states.saturating_mul(STATE_BYTES) / 16 * 13
 }
 
 /// The share of a search's lengths after which its growth is projected
