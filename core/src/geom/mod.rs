@@ -44,7 +44,7 @@ pub use narrow_gaps::close_narrow_gaps;
 pub use needles::without_needles;
 pub use offset::{OFFSET_ARC_TOLERANCE_MM, offset};
 pub use polygon::{Polygon, Region, ring_contains, ring_perimeter, signed_area};
-pub use polyline::{refine_mapped, refine_mapped_indexed, refine_mapped_thinned};
+pub use polyline::{refine_mapped, refine_mapped_indexed, refine_mapped_thinned, refine_mapped_thinned_split};
 pub use rect::Rect;
 pub use resolution::{mean_width, without_slivers};
 pub use rings_meet::{meeting_rings, rings_meet};

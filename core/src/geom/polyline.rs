@@ -23,7 +23,7 @@ use glam::DVec2;
 /// assert!(bent.len() > 8);
 /// ```
 pub fn refine_mapped(ring: &[DVec2], map: impl Fn(DVec2) -> DVec2, max_step: f64, tolerance: f64) -> Vec<DVec2> {
-    refined(ring, map, max_step, tolerance, None, &mut Vec::new())
+    refined(ring, map, max_step, tolerance, None, None, &mut Vec::new())
 }
 
 /// [`refine_mapped`], with where each of the ring's own vertices went: the
@@ -47,7 +47,7 @@ pub fn refine_mapped_indexed(
     tolerance: f64,
 ) -> (Vec<DVec2>, Vec<usize>) {
     let mut origins = Vec::with_capacity(ring.len());
-    let out = refined(ring, map, max_step, tolerance, None, &mut origins);
+    let out = refined(ring, map, max_step, tolerance, None, None, &mut origins);
     (out, origins)
 }
 
@@ -77,8 +77,42 @@ pub fn refine_mapped_thinned(
     tolerance: f64,
     thin: f64,
 ) -> Vec<DVec2> {
-    refined(ring, map, max_step, tolerance, Some(thin), &mut Vec::new())
+    refined(ring, map, max_step, tolerance, Some(thin), None, &mut Vec::new())
 }
+
+/// [`refine_mapped_thinned`], each edge `(a, b)` also split, before it is
+/// refined, at the fractions `splits(a, b, out)` pushes onto `out` (in
+/// `(0, 1)`, any order): where the map bends within a short stretch of an
+/// edge that its midpoints would miss. Those points are thinned like the
+/// others.
+///
+/// ```
+/// use glam::DVec2;
+/// use tracery_core::geom::refine_mapped_thinned_split;
+/// let strip = [DVec2::new(0.0, 0.0), DVec2::new(10.0, 0.0), DVec2::new(10.0, 1.0), DVec2::new(0.0, 1.0)];
+/// // A bump 0.2 wide at x = 0.5, which the midpoints of a 10-long edge miss.
+/// let bump = |p: DVec2| DVec2::new(p.x, p.y + (1.0 - (p.x - 0.5).abs() / 0.1).max(0.0) * 0.1);
+/// let plain = refine_mapped_thinned_split(&strip, bump, 10.0, 1e-3, 5e-4, |_, _, _| {});
+/// assert_eq!(plain.len(), 4);
+/// let split = refine_mapped_thinned_split(&strip, bump, 10.0, 1e-3, 5e-4, |a, b, out| {
+///     out.extend([0.04, 0.05, 0.06].iter().map(|x| if a.x < b.x { *x } else { 1.0 - *x }))
+/// });
+/// assert!(split.iter().any(|p| (p.y - 0.1).abs() < 1e-9), "{split:?}");
+/// ```
+pub fn refine_mapped_thinned_split(
+    ring: &[DVec2],
+    map: impl Fn(DVec2) -> DVec2,
+    max_step: f64,
+    tolerance: f64,
+    thin: f64,
+    splits: impl Fn(DVec2, DVec2, &mut Vec<f64>),
+) -> Vec<DVec2> {
+    refined(ring, map, max_step, tolerance, Some(thin), Some(&splits), &mut Vec::new())
+}
+
+/// Where to split an edge before refining it, as fractions of it
+/// ([`refine_mapped_thinned_split`]).
+type Splits<'a> = dyn Fn(DVec2, DVec2, &mut Vec<f64>) + 'a;
 
 fn refined(
     ring: &[DVec2],
@@ -86,6 +120,7 @@ fn refined(
     max_step: f64,
     tolerance: f64,
     thin: Option<f64>,
+    splits: Option<&Splits>,
     origins: &mut Vec<usize>,
 ) -> Vec<DVec2> {
     fn halve(
@@ -112,6 +147,7 @@ fn refined(
     let n = ring.len();
     let mapped: Vec<DVec2> = ring.iter().map(|&p| map(p)).collect();
     let mut edge: Vec<DVec2> = Vec::new();
+    let mut at: Vec<f64> = Vec::new();
     for i in 0..n {
         let (a, b) = (ring[i], ring[(i + 1) % n]);
         origins.push(out.len());
@@ -125,16 +161,26 @@ fn refined(
         out.clear();
         out.push(mapped[i]);
         let pieces = ((a.distance(b) / max_step.max(1e-12)).ceil() as usize).clamp(1, 10_000);
+        at.clear();
+        at.extend((1..pieces).map(|k| k as f64 / pieces as f64));
+        if let Some(splits) = splits {
+            splits(a, b, &mut at);
+            at.retain(|t| *t > 0.0 && *t < 1.0);
+            at.sort_by(f64::total_cmp);
+            at.dedup();
+        }
+        at.push(1.0);
         let mut previous = (a, mapped[i]);
-        for k in 1..=pieces {
-            let next = if k == pieces {
+        for (k, &t) in at.iter().enumerate() {
+            let last = k + 1 == at.len();
+            let next = if last {
                 (b, mapped[(i + 1) % n])
             } else {
-                let p = a.lerp(b, k as f64 / pieces as f64);
+                let p = a.lerp(b, t);
                 (p, map(p))
             };
             halve(&mut out, &map, (previous.0, next.0), (previous.1, next.1), tolerance, 8);
-            if k < pieces {
+            if !last {
                 out.push(next.1);
             }
             previous = next;

@@ -29,7 +29,7 @@ use super::{CurveKind, Distortion, PieceSet};
 use rayon::prelude::*;
 use rustc_hash::FxHashMap;
 
-use crate::geom::{Outline, Polygon, Region, joined_without_union, refine_mapped_thinned, union};
+use crate::geom::{Outline, Polygon, Region, joined_without_union, refine_mapped_thinned_split, union};
 
 /// A synthesized pattern in band space: `u` from 0 to the curve length,
 /// `v` across the band, in exemplar units.
@@ -182,13 +182,15 @@ struct Bend {
     coefficient: f64,
 }
 
-/// A [`Bend`] as one piece applies it: its slope held back so that the
-/// piece cannot fold, and the reach of its weight above and below it.
+/// A [`Bend`] as one piece applies it: the reach of its weight above and
+/// below it, and along `u` the radius over which it adds its slope, short
+/// enough that the piece cannot fold.
 struct CappedBend {
     at: f64,
     above: f64,
     below: f64,
     coefficient: f64,
+    radius: f64,
 }
 
 fn smoothstep(t: f64) -> f64 {
@@ -202,12 +204,25 @@ fn smoothstep(t: f64) -> f64 {
 /// plan keeps apart.
 pub const BREAK_GAP: f64 = 0.05;
 
-/// Largest slope change the bending is allowed, so that it stays gentle.
-const MAX_BEND: f64 = 1.5;
+/// Largest slope change a bend adds at a seam (68°). On the corpus, a
+/// larger one hardly lowered the kinks at the seams and leaned the strokes
+/// beside them further (`docs/geometry.md`, *Each bend its own radius*).
+const MAX_BEND: f64 = 2.5;
 
 /// Largest `|∂bend/∂v|` one bend may add: two bends overlap at most, so
 /// `v` still grows at least half as fast as before the bending.
 const MAX_FOLD_SLOPE: f64 = 0.25;
+
+/// Shortest radius of a bend along `u`, in exemplar heights (0.01 mm on a
+/// 10 mm band): a bend that would need a shorter one to stay within
+/// [`MAX_FOLD_SLOPE`] adds less slope instead.
+const MIN_BEND_RADIUS: f64 = 1e-3;
+
+/// Distances from a cut, in bend radii, at which the edges leaving it are
+/// split before they are mapped: a bend acts within its radius of the
+/// seam, which may be far shorter than the edge, and refining halves an
+/// edge only where its midpoint strays (`geom::refine_mapped`).
+const SPLITS_NEAR_CUT: [f64; 4] = [0.125, 0.25, 0.5, 1.0];
 
 /// The union of the stitched pieces' polygons, which touch only along the
 /// seams, where both sides of a cut have the same points to the last bit:
@@ -226,6 +241,31 @@ fn joined_pieces(polygons: Vec<Polygon>, seams_u: &[f64]) -> Region {
         })
         .collect();
     joined_without_union(polygons.len(), &outlines).unwrap_or_else(|| union(&[&Region::new(polygons)]))
+}
+
+/// Pushes onto `out` where to split the edge from `a` to `b`, as
+/// fractions of it, if it leaves a cut (or reaches one): at
+/// [`SPLITS_NEAR_CUT`] of that cut's shortest bend radius, exemplar units.
+/// `cuts` gives each cut's `x` and that radius (infinite without bends).
+fn split_near_cuts(a: DVec2, b: DVec2, cuts: [(f64, f64); 2], snap: f64, out: &mut Vec<f64>) {
+    let dx = (b.x - a.x).abs();
+    if dx <= snap {
+        return;
+    }
+    for (x, reach) in cuts.into_iter().filter(|c| c.1.is_finite()) {
+        for f in SPLITS_NEAR_CUT {
+            let d = f * reach / dx;
+            if d >= 1.0 {
+                continue;
+            }
+            if (a.x - x).abs() <= snap {
+                out.push(d);
+            }
+            if (b.x - x).abs() <= snap {
+                out.push(1.0 - d);
+            }
+        }
+    }
 }
 
 /// `max_x x·(1 − x)²·(1 + 2x)` over `[0, 1]`, the largest value of the bend's
@@ -358,22 +398,35 @@ pub fn stitch(
         // increasing with the exemplar's height, so the map never folds
         // material over itself (a fold splits or merges parts the plan
         // counted). Worked out once per piece, not per point.
+        // A bend adds its whole slope change at the seam, over a radius
+        // short enough for that: `|∂bend/∂v|` is at most `|c|·r·0.26 /
+        // support`. Held to the piece's radius before (0.3 of its width),
+        // the cap left the slope change unmade where a steep stroke met a
+        // neighbour close above or below it, and a kink at the seam.
+        let min_radius = (MIN_BEND_RADIUS * set.exemplar_height * stretch).min(radius.abs());
         let capped = |bends: &[Bend]| -> Vec<CappedBend> {
             bends
                 .iter()
                 .map(|b| {
                     let support = (b.above - b.at).min(b.at - b.below).max(1e-12);
-                    let cap = MAX_FOLD_SLOPE * support / (radius.abs() * FALLOFF_PEAK).max(1e-12);
+                    let reach = MAX_FOLD_SLOPE * support / FALLOFF_PEAK;
+                    let radius_b = (reach / b.coefficient.abs().max(1e-12)).min(radius.abs()).max(min_radius);
+                    let cap = reach / radius_b.max(1e-12);
                     CappedBend {
                         at: b.at,
                         above: (b.above - b.at).max(1e-12),
                         below: (b.at - b.below).max(1e-12),
                         coefficient: b.coefficient.clamp(-cap, cap),
+                        radius: radius_b.max(1e-12),
                     }
                 })
                 .collect()
         };
         let (left_capped, right_capped) = (capped(&left_bends[i]), capped(&right_bends[i]));
+        // The shortest bend radius at each cut, in the exemplar's `x`.
+        let x_per_u = piece.width / width.max(1e-12);
+        let shortest = |bends: &[CappedBend]| bends.iter().map(|b| b.radius * x_per_u).fold(f64::INFINITY, f64::min);
+        let (left_reach, right_reach) = (shortest(&left_capped), shortest(&right_capped));
         let place = |p: DVec2| -> DVec2 {
             // Points on a cut must land exactly on the seam line, whatever
             // rounding the clipping left in them.
@@ -391,12 +444,16 @@ pub fn stitch(
             let mut v = (1.0 - h) * left + h * right;
             let mut bend = 0.0;
             for (bends, seam) in [(&left_capped, u0), (&right_capped, u1)] {
-                let x = (u - seam).abs() / radius;
-                if x >= 1.0 {
+                let distance = (u - seam).abs();
+                if distance >= radius {
                     continue;
                 }
-                let falloff = (1.0 - x) * (1.0 - x) * (1.0 + 2.0 * x);
                 for b in bends.iter() {
+                    let x = distance / b.radius;
+                    if x >= 1.0 {
+                        continue;
+                    }
+                    let falloff = (1.0 - x) * (1.0 - x) * (1.0 + 2.0 * x);
                     let weight = if v >= b.at {
                         (1.0 - (v - b.at) / b.above).clamp(0.0, 1.0)
                     } else {
@@ -420,7 +477,10 @@ pub fn stitch(
             }
             DVec2::new(u, v)
         };
-        let deform = |ring: &Vec<DVec2>| refine_mapped_thinned(ring, place, max_step, tolerance, 0.5 * tolerance);
+        let cuts = [(piece.u_start, left_reach), (piece.u_end(), right_reach)];
+        let splits = |a: DVec2, b: DVec2, out: &mut Vec<f64>| split_near_cuts(a, b, cuts, snap, out);
+        let deform =
+            |ring: &Vec<DVec2>| refine_mapped_thinned_split(ring, place, max_step, tolerance, 0.5 * tolerance, splits);
         let polygons = piece
             .region
             .polygons
