@@ -123,9 +123,13 @@ pub fn max_distance_from(region: &Region, curve: &Curve) -> f64 {
 
 /// The kink of the outline where it crosses each seam, degrees: at every
 /// vertex lying on a seam line `u = s` (band space) whose neighbours sit on
-/// either side of it, the turning angle there minus the mean turning of its
+/// either side of it, the turning angle there less the mean turning of its
 /// two neighbours, so that a smoothly curving outline scores about zero and
-/// a corner scores its angle. Returns the largest kink per seam crossing.
+/// a corner scores its angle. Where the turn there is the smaller of the
+/// two, it is the kink: a corner of the design one vertex from the seam
+/// (a fret's square corner, a stroke's tip) turns at the neighbour, not at
+/// the seam, and scored half its angle there before (2026-12-04).
+/// Returns the kink of each seam crossing.
 ///
 /// ```
 /// use glam::DVec2;
@@ -140,6 +144,15 @@ pub fn max_distance_from(region: &Region, curve: &Curve) -> f64 {
 /// let kinks = seam_kinks_deg(&region, &[2.0], 1e-9);
 /// assert_eq!(kinks.len(), 1);
 /// assert!((kinks[0] - 30.0).abs() < 1e-6);
+/// // A straight edge across the seam, with a square corner one vertex on.
+/// let outer = vec![
+///     DVec2::new(0.0, 0.0), DVec2::new(4.0, 0.0), DVec2::new(4.0, 2.0), DVec2::new(3.0, 2.0),
+///     DVec2::new(3.0, 1.0), DVec2::new(2.0, 1.0), DVec2::new(1.0, 1.0), DVec2::new(0.0, 1.0),
+/// ];
+/// let region = Region::new(vec![Polygon { outer, holes: vec![] }]);
+/// let kinks = seam_kinks_deg(&region, &[2.0], 1e-9);
+/// assert_eq!(kinks.len(), 1);
+/// assert!(kinks[0] < 1e-6, "{kinks:?}");
 /// ```
 pub fn seam_kinks_deg(region: &Region, seams_u: &[f64], tolerance: f64) -> Vec<f64> {
     let mut kinks = Vec::new();
@@ -172,7 +185,7 @@ pub fn seam_kinks_deg(region: &Region, seams_u: &[f64], tolerance: f64) -> Vec<f
             }
             let here = turn(prev, p, next);
             let around = 0.5 * (turn(at(-2), prev, p) + turn(p, next, at(2)));
-            kinks.push((here - around).abs().to_degrees());
+            kinks.push((here - around).abs().min(here.abs()).to_degrees());
         }
     }
     kinks
