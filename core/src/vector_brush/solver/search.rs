@@ -363,7 +363,7 @@ impl<'p> Search<'p> {
             }
             // The loop closes onto the first piece, on the axis: what the
             // offsets do not close is spread over the seams afterwards.
-            let raw = state.delta * problem.keep[seam] + problem.tau[seam] as f32;
+            let raw = problem.aligned(state.delta, a, s);
             if raw.abs() > problem.max_hold {
                 return;
             }
@@ -424,13 +424,6 @@ impl<'p> Search<'p> {
         Found { total, pieces, offsets }
     }
 }
-
-/// Most states the bounded search sizes its beam for. Its states are
-/// mostly open ones, held whole, so it is held to the 2 M states of the
-/// cap before expanded states were counted at 6 bytes: `vectorian105`'s
-/// loops with any number of parts then peak at 37–40 MB, and with a beam
-/// twice as wide (the default cap of 4 M) at 71 MB.
-const BOUNDED_MAX_STATES: usize = 2_000_000;
 
 /// Slack on the accepted lengths, relative to the target length.
 const LENGTH_SLACK: f64 = 1e-9;
@@ -551,18 +544,7 @@ pub(super) fn search_with(
     for &tolerance in &tolerances[..levels] {
         let window = window_of(tolerance);
         if bounded_search {
-            // Each search running at once keeps `width` traces per length,
-            // and the children of `width` states wait in the next lengths
-            // (one per following piece, over the lengths a piece spans):
-            // all of it within the cap, and within [`BOUNDED_MAX_STATES`]:
-            // the waiting states are held whole (with their variety
-            // history, about 30 times what an expanded one leaves), and no
-            // room is counted for them.
-            let lengths = grid.key(window.1) as usize + 1;
-            let waiting = n * (problem.steps.iter().copied().max().unwrap_or(1) as usize + 2);
-            let running = rayon::current_num_threads().min(runs_per_level).max(1);
-            let held = options.max_states.min(BOUNDED_MAX_STATES);
-            problem.beam = Some((held / (running * (lengths + waiting))).max(1));
+            problem.beam = Some(cap::beam_width(options, &problem.steps, grid.key(window.1), runs_per_level));
         }
         problem.work_total = problem.work_total.max(runs_per_level * (grid.key(window.1) as usize + 1));
         let found = match options.curve {

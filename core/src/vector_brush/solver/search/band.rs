@@ -24,12 +24,20 @@ impl Problem<'_> {
         Some((raw.clamp(-allowance, allowance), self.misalignment_cost(held)))
     }
 
+    /// Where the alignments put piece `b` after piece `a` placed at
+    /// `delta`, before the band holds it in: `δ·keep + τ` of the seam (a
+    /// break starts back on the axis).
+    #[inline]
+    pub(super) fn aligned(&self, delta: f32, a: usize, b: usize) -> f32 {
+        let seam = a * self.n() + b;
+        delta * self.keep[seam] + self.tau[seam] as f32
+    }
+
     /// Where piece `b` goes after piece `a` placed at `delta`, and what
     /// holding it in the band costs ([`Self::hold_in_band`]).
     #[inline]
     pub(super) fn offset_after(&self, delta: f32, a: usize, b: usize) -> Option<(f32, f64)> {
-        let seam = a * self.n() + b;
-        self.hold_in_band(delta * self.keep[seam] + self.tau[seam] as f32, b)
+        self.hold_in_band(self.aligned(delta, a, b), b)
     }
 
     /// The offsets of a sequence the search found, replayed from its

@@ -6,7 +6,7 @@ use super::{Search, State};
 use crate::control::StateCap;
 use crate::vector_brush::Autocorrelation;
 use crate::vector_brush::SolveError;
-use crate::vector_brush::solver::STATE_BYTES;
+use crate::vector_brush::solver::{STATE_BYTES, SolveOptions};
 
 /// States a search takes from the cap at a time: while the parallel
 /// searches each hold up to this many unused, the cap may be met that many
@@ -115,3 +115,26 @@ const MIN_PROJECTED_LENGTHS: usize = 16;
 /// projection (the last lengths hold fewer states: those that can no
 /// longer close the loop in time are dropped).
 const PROJECTED_MARGIN: f64 = 1.25;
+
+/// Most states the bounded search sizes its beam for. Its states are
+/// mostly open ones, held whole, so it is held to the 2 M states of the
+/// cap before expanded states were counted at 6 bytes: `vectorian105`'s
+/// loops with any number of parts then peak at 37–40 MB, and with a beam
+/// twice as wide (the default cap of 4 M) at 71 MB.
+const BOUNDED_MAX_STATES: usize = 2_000_000;
+
+/// The bounded search's beam: how many states of each length it keeps.
+/// Each search running at once keeps `width` traces per length, and the
+/// children of `width` states wait in the next lengths (one per following
+/// piece, over the lengths a piece spans): all of it within the cap, and
+/// within [`BOUNDED_MAX_STATES`], since the waiting states are held whole
+/// (with their variety history, about 30 times what an expanded one
+/// leaves) and no room is counted for them. `steps` are the pieces'
+/// widths in length keys, `last_key` the window's last key.
+pub(super) fn beam_width(options: &SolveOptions, steps: &[u32], last_key: u32, runs: usize) -> usize {
+    let lengths = last_key as usize + 1;
+    let waiting = steps.len() * (steps.iter().copied().max().unwrap_or(1) as usize + 2);
+    let running = rayon::current_num_threads().min(runs).max(1);
+    let held = options.max_states.min(BOUNDED_MAX_STATES);
+    (held / (running * (lengths + waiting))).max(1)
+}
