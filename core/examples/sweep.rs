@@ -120,6 +120,9 @@ struct Run {
     /// The beam width where the exact search passed the state cap and the
     /// bounded search answered.
     bounded: Option<usize>,
+    /// Whether the exact search passed the state cap and the search that
+    /// drops dominated partial patterns answered.
+    dominance: bool,
     /// Milliseconds in analysis, solve, geometry and meshing.
     stages: String,
     /// The solver's matching cost and autocorrelation, to compare with the
@@ -179,6 +182,7 @@ fn run_one(
         time_ms: 0.0,
         states: 0,
         bounded: None,
+        dominance: false,
         stages: String::new(),
         matching: 0.0,
         auto: 0.0,
@@ -218,6 +222,7 @@ fn run_one(
     }
     run.states = s.states;
     run.bounded = s.bounded;
+    run.dominance = s.dominance;
     run.matching = s.matching_cost;
     run.auto = s.autocorrelation;
     run.stages = ["analysis", "solve", "geometry"]
@@ -299,7 +304,7 @@ fn percentile(sorted: &[f64], q: f64) -> f64 {
 
 fn summary(runs: &[Run], curves: &[String]) -> String {
     let mut out = String::from(
-        "| curve | runs | answered | exact | none | cap | past cap | mesh | error | drift max | seam max ° | stretch p95 / max | shear p95 / max ° | period < ⅓ | of which avoidable | p50 ms | p95 ms | max ms |\n\
+        "| curve | runs | answered | exact | none | cap | past cap: dominance / bounded | mesh | error | drift max | seam max ° | stretch p95 / max | shear p95 / max ° | period < ⅓ | of which avoidable | p50 ms | p95 ms | max ms |\n\
          |---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n",
     );
     let mut rows: Vec<(String, Vec<&Run>)> =
@@ -317,6 +322,11 @@ fn summary(runs: &[Run], curves: &[String]) -> String {
             values
         };
         let (stretches, shears) = (sorted(|r| r.stretch), sorted(|r| r.shear_deg));
+        let past_cap = format!(
+            "{} / {}",
+            answered.iter().filter(|r| r.dominance).count(),
+            answered.iter().filter(|r| r.bounded.is_some()).count()
+        );
         out += &format!(
             "| {name} | {} | {} | {} | {} | {} | {} | {} | {} | {:.2} | {:.1} | {:.2} / {:.2} | {:.1} / {:.1} | {} | {} | {:.1} | {:.1} | {:.1} |\n",
             rs.len(),
@@ -324,7 +334,7 @@ fn summary(runs: &[Run], curves: &[String]) -> String {
             answered.iter().filter(|r| r.exact).count(),
             count("none"),
             count("cap"),
-            answered.iter().filter(|r| r.bounded.is_some()).count(),
+            past_cap,
             count("mesh"),
             count("error"),
             answered.iter().map(|r| r.drift).fold(0.0, f64::max),
@@ -363,7 +373,7 @@ fn main() {
         .collect();
     let mut runs = Vec::new();
     let mut csv = String::from(
-        "ornament,curve,target,status,exact,drift,period,repeat,seam_deg,stretch,shear_deg,pieces,time_ms,states,bounded,stages,matching,auto,avoidable,reason\n",
+        "ornament,curve,target,status,exact,drift,period,repeat,seam_deg,stretch,shear_deg,pieces,time_ms,states,bounded,dominance,stages,matching,auto,avoidable,reason\n",
     );
     let started = Instant::now();
     for file in &files {
@@ -382,7 +392,7 @@ fn main() {
                     r.avoidable = probe.status == "ok" && !short_period(&probe);
                 }
                 csv += &format!(
-                    "{},{},{},{},{},{:.3},{:.3},{:.3},{:.2},{:.3},{:.2},{},{:.2},{},{},{},{:.4},{:.2},{},\"{}\"\n",
+                    "{},{},{},{},{},{:.3},{:.3},{:.3},{:.2},{:.3},{:.2},{},{:.2},{},{},{},{},{:.4},{:.2},{},\"{}\"\n",
                     r.ornament,
                     r.curve,
                     r.target,
@@ -398,6 +408,7 @@ fn main() {
                     r.time_ms,
                     r.states,
                     r.bounded.map_or(String::new(), |w| w.to_string()),
+                    r.dominance,
                     r.stages,
                     r.matching,
                     r.auto,

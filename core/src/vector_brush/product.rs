@@ -150,6 +150,14 @@ pub(crate) fn to_product(
     facts.push("alternative", Fact::Count(settings.alternative as usize));
     facts.push("pieces_in_exemplar", Fact::Count(piece_count));
     facts.push("dp_states", Fact::Count(solution.states));
+    // Which search answered: past the state cap, one that drops dominated
+    // partial patterns, then one that keeps the cheapest of each length.
+    let search = match (solution.bounded, solution.dominance) {
+        (Some(_), _) => "bounded",
+        (None, true) => "dominance",
+        (None, false) => "exact",
+    };
+    facts.push("search", Fact::Text(search.into()));
     // Measured on the stitched pattern, before it is bent along the curve:
     // how much the outline turns at a seam beyond its turn around it.
     let kinks = timings.time("seam check", || seam_kinks_deg(&band.region, &band.seams, 1e-6 * band.length));

@@ -3,7 +3,7 @@
 
 use super::Goal;
 use super::search::search_all;
-use super::{CurveKind, SolveOptions, Target, bounded_retry};
+use super::{CurveKind, SolveOptions, Target, past_cap_retry};
 use crate::control::Control;
 use crate::vector_brush::{PieceSet, SolveError, Unmet};
 
@@ -48,7 +48,7 @@ pub(super) fn diagnose(set: &PieceSet, options: &SolveOptions, control: &Control
 /// states); only where that finds none too does the cap stand.
 fn exists(set: &PieceSet, options: &SolveOptions, control: &Control) -> Result<bool, SolveError> {
     let control = control.silent();
-    let found = search_all(set, options, Goal::Any, &control).or_else(|e| bounded_retry(set, options, e, &control))?;
+    let found = search_all(set, options, Goal::Any, &control).or_else(|e| past_cap_retry(set, options, e, &control))?;
     Ok(found.is_some())
 }
 

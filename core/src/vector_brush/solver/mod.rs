@@ -220,6 +220,11 @@ pub struct Solution {
     /// may exist.
     #[serde(default)]
     pub bounded: Option<usize>,
+    /// Whether the exact search needed more states than the cap and one
+    /// that drops dominated partial patterns found this pattern instead
+    /// (`Goal::Dominated`): the same pattern when the variety term is off.
+    #[serde(default)]
+    pub dominance: bool,
 }
 
 /// How far past the band's edge, as a fraction of half the band, the solver
@@ -273,12 +278,12 @@ pub fn solve(set: &PieceSet, options: &SolveOptions, control: &Control) -> Resul
     };
     let mut found = match search_all(search_set, options, Goal::Best, control) {
         Err(SolveError::TooManyStates { .. }) if !options.prefix.is_empty() => None,
-        other => other.or_else(|e| bounded_retry(search_set, options, e, control))?,
+        other => other.or_else(|e| past_cap_retry(search_set, options, e, control))?,
     };
     if found.is_none() && !options.prefix.is_empty() {
         let fresh = SolveOptions { prefix: Vec::new(), ..options.clone() };
         found = search_all(search_set, &fresh, Goal::Best, control)
-            .or_else(|e| bounded_retry(search_set, &fresh, e, control))?;
+            .or_else(|e| past_cap_retry(search_set, &fresh, e, control))?;
     }
     match found {
         Some(mut solution) => {
@@ -293,10 +298,13 @@ pub fn solve(set: &PieceSet, options: &SolveOptions, control: &Control) -> Resul
     }
 }
 
-/// Where the exact search needs more states than the cap, a bounded one
-/// (the cheapest states of each length) looks for a pattern that meets every
+/// Where the exact search needs more states than the cap, one that drops
+/// dominated partial patterns runs instead, where the targets allow it: it
+/// finds the same pattern when the variety term is off, and its answer,
+/// pattern or none, stands. Past the cap again, a bounded one (the
+/// cheapest states of each length) looks for a pattern that meets every
 /// target. Finding none proves nothing, so the cap error stands then.
-pub(super) fn bounded_retry(
+pub(super) fn past_cap_retry(
     set: &PieceSet,
     options: &SolveOptions,
     error: SolveError,
@@ -304,6 +312,12 @@ pub(super) fn bounded_retry(
 ) -> Result<Option<Solution>, SolveError> {
     if !matches!(error, SolveError::TooManyStates { .. }) {
         return Err(error);
+    }
+    if options.dominance_is_sound() {
+        match search_all(set, options, Goal::Dominated, control) {
+            Err(SolveError::TooManyStates { .. }) => {}
+            answer => return answer,
+        }
     }
     match search_all(set, options, Goal::Bounded, control)? {
         Some(solution) => Ok(Some(solution)),
@@ -316,8 +330,13 @@ pub(super) fn bounded_retry(
 pub(super) enum Goal {
     /// The cheapest pattern.
     Best,
+    /// The cheapest pattern of a search that drops every partial pattern
+    /// another one of the same length and last piece dominates (cheaper,
+    /// and connected at least as much: `search/dominance.rs`), where the
+    /// targets allow it.
+    Dominated,
     /// The cheapest pattern of a search that keeps only the cheapest
-    /// states of each length, within the cap.
+    /// states of each length, within the cap (dominated ones dropped first).
     Bounded,
     /// Any pattern, to tell whether there is one: the diagnosis of targets
     /// that cannot be met. Stopping at the first made a refusal's

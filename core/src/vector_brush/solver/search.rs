@@ -9,6 +9,7 @@ use rayon::prelude::*;
 mod band;
 mod bound;
 mod cap;
+mod dominance;
 mod finish;
 mod narrowing;
 mod topology;
@@ -61,6 +62,9 @@ pub(super) struct Problem<'a> {
     /// once one of them has found one.
     stop_at_first: bool,
     found_any: &'a AtomicBool,
+    /// Whether partial patterns another one dominates are dropped
+    /// ([`Search::drop_dominated`]), where the targets allow it.
+    dominance: bool,
     /// Whether descriptors are followed. Where the targets ask for nothing
     /// ("any" parts and holes), every state shares one descriptor, and the
     /// finished pattern is checked afterwards ([`search_all`]).
@@ -305,6 +309,9 @@ impl<'p> Search<'p> {
             open.clear();
             autos.clear();
             self.buckets[slot].drain_into(&mut open, &mut autos);
+            if self.dominance_applies() {
+                self.drop_dominated(&mut open, &mut autos);
+            }
             if let Some(width) = problem.beam
                 && open.len() > width
             {
@@ -528,6 +535,7 @@ pub(super) fn search_with(
         beam: None,
         bounded: &bounded,
         stop_at_first: goal == Goal::Any,
+        dominance: matches!(goal, Goal::Dominated | Goal::Bounded),
         found_any: &found_any,
         topology,
         states: &states,
@@ -570,6 +578,7 @@ pub(super) fn search_with(
             control.report(1.0);
             let mut solution = finish(set, options, found, tolerance, created.load(Ordering::Relaxed));
             solution.bounded = bounded.load(Ordering::Relaxed).then_some(problem.beam.unwrap_or(0));
+            solution.dominance = goal == Goal::Dominated;
             return Ok(Some(solution));
         }
     }

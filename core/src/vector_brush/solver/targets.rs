@@ -41,4 +41,16 @@ impl SolveOptions {
         let loop_ok = self.curve == CurveKind::Open || !self.closed_pattern || t.2 > 0;
         self.components.accepts(t.0) && self.holes.accepts(t.1) && loop_ok
     }
+
+    /// Whether a partial pattern may stand for another of the same length
+    /// and last piece that costs no less and whose portals it connects at
+    /// least as much, with no more parts closed inside: every pattern the
+    /// other finishes into, it finishes into one with no more parts and,
+    /// on a loop, one that runs all around wherever that one does. More
+    /// connection may close more holes, so the holes must be free; and
+    /// fewer parts is no better unless any number, or exactly one, will do
+    /// (a pattern has at least one).
+    pub(super) fn dominance_is_sound(&self) -> bool {
+        self.holes == Target::Any && matches!(self.components, Target::Any | Target::Exactly(1))
+    }
 }

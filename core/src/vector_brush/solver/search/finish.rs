@@ -35,5 +35,6 @@ pub(super) fn finish(set: &PieceSet, options: &SolveOptions, found: Found, toler
         wraps,
         states: created,
         bounded: None,
+        dominance: false,
     }
 }
