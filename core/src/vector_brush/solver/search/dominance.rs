@@ -169,6 +169,49 @@ mod tests {
         assert!(4 * dominance_states < 3 * exact_states, "{dominance_states} states against {exact_states}");
     }
 
+    /// The same with seam costs drawn at random on the ladder: a search
+    /// that kept only the cheapest state of each length and last piece,
+    /// whatever its partition, would lose the cheapest pattern with one
+    /// part here, where the cheapest partial patterns leave rails apart
+    /// that only dearer seams can join later.
+    #[test]
+    fn dropping_dominated_partial_patterns_finds_the_same_cost_whatever_the_seams_cost() {
+        let slicing = SliceOptions { mode: SlicingMode::Uniform { cuts: 7 }, ..SliceOptions::default() };
+        let base = PieceSet::new(&ladder(), &slicing).unwrap();
+        let width = base.pieces[0].width;
+        let (mut compared, mut dropped) = (0, 0);
+        for seed in 1..=24u64 {
+            let mut set = base.clone();
+            let mut state = seed;
+            for a in 0..set.len() {
+                for b in 0..set.len() {
+                    state = crate::random::splitmix64(state);
+                    set.set_pair_cost(a, b, (state >> 11) as f64 / (1u64 << 53) as f64);
+                }
+            }
+            for curve in [CurveKind::Open, CurveKind::Closed] {
+                let mut options = SolveOptions::new(3.0 * set.exemplar_width);
+                options.curve = curve;
+                options.length_quantum = Some(width);
+                let control = Control::default();
+                let exact = search_all(&set, &options, Goal::Best, &control).unwrap();
+                let pruned = search_all(&set, &options, Goal::Dominated, &control).unwrap();
+                match (exact, pruned) {
+                    (Some(e), Some(p)) => {
+                        assert!((e.cost - p.cost).abs() < 1e-9, "seed {seed} {curve:?}: {} against {}", e.cost, p.cost);
+                        assert_eq!(p.components, 1, "seed {seed} {curve:?}");
+                        dropped += e.states - p.states;
+                        compared += 1;
+                    }
+                    (None, None) => {}
+                    (e, p) => panic!("seed {seed} {curve:?}: {e:?} against {p:?}"),
+                }
+            }
+        }
+        assert!(compared >= 24, "only {compared} instances had a pattern");
+        assert!(dropped > 0, "nothing dropped");
+    }
+
     #[test]
     fn a_coarser_partition_dominates_a_finer_one_and_not_the_other_way() {
         // Everything in one part against the start's top portal apart.
