@@ -66,21 +66,24 @@ impl Search<'_> {
 }
 
 /// Where the variety term is on, the cheapest states of each length and
-/// last piece kept whether another dominates them or not. Dominance is exact where the cost of a finish
-/// depends only on its pieces, but the variety term depends on the pieces
-/// before too: a dominated state with another history may finish cheaper.
-/// Dropping every dominated state left `vectorian105`'s loops (any number
-/// of parts, 16–19 M states exactly) 25 k states and an objective 0.3–2.3 %
-/// above the search without a cap; keeping the 4 cheapest, 45 k states and
-/// −0.2 to +0.5 %; the 16 cheapest, 110–123 k states and 0 to −0.4 %; the
-/// 64 cheapest, 360–410 k states and the same patterns.
+/// last piece kept whether another dominates them or not. Dominance is
+/// exact where the cost of a finish depends only on its pieces, but the
+/// variety term depends on the pieces before too: a dominated state with
+/// another history may finish cheaper. Dropping every dominated state left
+/// `vectorian105`'s loops (any number of parts, 16–19 M states exactly)
+/// 23–27 k states and an objective 0.3–2.3 % above the search without a
+/// cap; keeping the 4 cheapest, 42–49 k states and −0.2 to +0.5 %; the 16
+/// cheapest, 108–123 k states and 0 to −0.4 %; the 64 cheapest, 358–410 k
+/// states and the same objective.
 const KEPT_REGARDLESS: usize = 16;
 
 /// Whether `a` connects every pair of portals `b` connects, with no more
-/// parts closed inside: every pattern `b` can be finished into, `a` finishes
-/// into one with as many components running all around, and no more parts.
+/// parts closed inside: whatever finishes `b`, the same pieces finish `a`
+/// with no more parts and, on a loop, with a part running all around
+/// wherever `b`'s has one.
 fn dominates(a: &TopologyDescriptor, b: &TopologyDescriptor) -> bool {
-    if a.closed_components() > b.closed_components() || a.right().len() != b.right().len() {
+    let same_portals = a.left().len() == b.left().len() && a.right().len() == b.right().len();
+    if !same_portals || a.closed_components() > b.closed_components() {
         return false;
     }
     let mut map = [u16::MAX; 256];
