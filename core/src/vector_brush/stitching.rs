@@ -403,21 +403,21 @@ pub fn stitch(
         // support`. Held to the piece's radius before (0.3 of its width),
         // the cap left the slope change unmade where a steep stroke met a
         // neighbour close above or below it, and a kink at the seam.
-        let min_radius = (MIN_BEND_RADIUS * set.exemplar_height * stretch).min(radius.abs());
+        let min_radius = (MIN_BEND_RADIUS * set.exemplar_height * stretch).min(radius);
         let capped = |bends: &[Bend]| -> Vec<CappedBend> {
             bends
                 .iter()
                 .map(|b| {
                     let support = (b.above - b.at).min(b.at - b.below).max(1e-12);
                     let reach = MAX_FOLD_SLOPE * support / FALLOFF_PEAK;
-                    let radius_b = (reach / b.coefficient.abs().max(1e-12)).min(radius.abs()).max(min_radius);
-                    let cap = reach / radius_b.max(1e-12);
+                    let radius_b = (reach / b.coefficient.abs().max(1e-12)).min(radius).max(min_radius).max(1e-12);
+                    let cap = reach / radius_b;
                     CappedBend {
                         at: b.at,
                         above: (b.above - b.at).max(1e-12),
                         below: (b.at - b.below).max(1e-12),
                         coefficient: b.coefficient.clamp(-cap, cap),
-                        radius: radius_b.max(1e-12),
+                        radius: radius_b,
                     }
                 })
                 .collect()

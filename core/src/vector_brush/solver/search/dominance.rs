@@ -1,8 +1,7 @@
 //! Dropping partial patterns another one of the same length and last piece
 //! dominates: cheaper, and connected at least as much.
 
-use std::sync::atomic::Ordering;
-
+use super::narrowing::total;
 use super::{Search, State, Topology};
 use crate::vector_brush::{Autocorrelation, TopologyDescriptor};
 
@@ -22,7 +21,7 @@ impl Search<'_> {
     pub(super) fn drop_dominated(&mut self, open: &mut Vec<State>, autos: &mut Vec<Autocorrelation>) {
         let beta = self.problem.options.variety;
         let floor = if self.variety() { KEPT_REGARDLESS } else { 0 };
-        let total = |i: usize| open[i].cost + autos.get(i).map_or(0.0, |a| beta * a.value());
+        let total = |i: usize| total(open, autos, beta, i);
         let mut order: Vec<usize> = (0..open.len()).collect();
         // Of equal totals the less divided first, so that it is the one kept.
         let list = &self.interner.list;
@@ -30,7 +29,7 @@ impl Search<'_> {
         order.sort_unstable_by(|&i, &j| {
             open[i].piece.cmp(&open[j].piece).then(total(i).total_cmp(&total(j))).then(parts(i).cmp(&parts(j)))
         });
-        let mut keep = vec![false; open.len()];
+        let mut kept_states: Vec<usize> = Vec::with_capacity(open.len());
         let mut kept: Vec<u32> = Vec::new();
         let mut piece = u16::MAX;
         for &i in &order {
@@ -38,30 +37,15 @@ impl Search<'_> {
                 piece = open[i].piece;
                 kept.clear();
             }
-            let list = &self.interner.list;
             let d = &list[open[i].descriptor as usize];
             if kept.len() >= floor && kept.iter().any(|&k| dominates(&list[k as usize], d)) {
                 continue;
             }
             kept.push(open[i].descriptor);
-            keep[i] = true;
+            kept_states.push(i);
         }
-        let before = open.len();
-        let mut at = 0;
-        open.retain(|_| {
-            at += 1;
-            keep[at - 1]
-        });
-        if !autos.is_empty() {
-            let mut at = 0;
-            autos.retain(|_| {
-                at += 1;
-                keep[at - 1]
-            });
-        }
-        let dropped = before - open.len();
-        self.counted -= dropped;
-        self.problem.states.fetch_sub(dropped, Ordering::Relaxed);
+        kept_states.sort_unstable();
+        self.keep_only(&kept_states, open, autos);
     }
 }
 

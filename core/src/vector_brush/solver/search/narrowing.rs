@@ -12,19 +12,25 @@ impl Search<'_> {
     /// variety penalty included), dropping the rest: the bounded search.
     pub(super) fn keep_cheapest(&mut self, width: usize, open: &mut Vec<State>, autos: &mut Vec<Autocorrelation>) {
         let beta = self.problem.options.variety;
-        let total = |i: usize| open[i].cost + autos.get(i).map_or(0.0, |a| beta * a.value());
+        let total = |i: usize| total(open, autos, beta, i);
         let mut order: Vec<usize> = (0..open.len()).collect();
         order.select_nth_unstable_by(width, |&i, &j| total(i).total_cmp(&total(j)));
         order.truncate(width);
         order.sort_unstable();
-        let dropped = open.len() - width;
-        *open = order.iter().map(|&i| open[i]).collect();
+        self.keep_only(&order, open, autos);
+        self.problem.bounded.store(true, Ordering::Relaxed);
+    }
+
+    /// Keeps only the open states at `kept` (in ascending order), giving
+    /// the others' places in the cap back.
+    pub(super) fn keep_only(&mut self, kept: &[usize], open: &mut Vec<State>, autos: &mut Vec<Autocorrelation>) {
+        let dropped = open.len() - kept.len();
+        *open = kept.iter().map(|&i| open[i]).collect();
         if !autos.is_empty() {
-            *autos = order.iter().map(|&i| autos[i]).collect();
+            *autos = kept.iter().map(|&i| autos[i]).collect();
         }
         self.counted -= dropped;
         self.problem.states.fetch_sub(dropped, Ordering::Relaxed);
-        self.problem.bounded.store(true, Ordering::Relaxed);
     }
 
     /// Lays the fixed beginning (`SolveOptions::prefix`, open curves) as a
@@ -70,4 +76,11 @@ impl Search<'_> {
         self.add(key, state, 0.0, || correlation)?;
         Ok(Some(key))
     }
+}
+
+/// The open state `i`'s cost with its variety penalty (`autos` is empty
+/// where the variety term is off): what the searches that drop states rank
+/// them by.
+pub(super) fn total(open: &[State], autos: &[Autocorrelation], beta: f64, i: usize) -> f64 {
+    open[i].cost + autos.get(i).map_or(0.0, |a| beta * a.value())
 }
