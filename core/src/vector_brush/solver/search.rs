@@ -406,7 +406,7 @@ impl<'p> Search<'p> {
     /// The state after `state` (in the arena at `parent`, keyed `key`) when
     /// piece `b` follows it, or `None` where `b` cannot be held in the band
     /// or the targets could no longer be met.
-    #[inline]
+    #[inline(always)]
     fn follow(&mut self, state: &State, parent: u32, key: u32, b: usize) -> Option<State> {
         let problem = self.problem;
         let a = usize::from(state.piece);
