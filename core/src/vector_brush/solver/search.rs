@@ -83,6 +83,15 @@ pub(super) struct Problem<'a> {
     control: &'a Control<'a>,
 }
 
+/// Where a state goes in its bucket ([`Search::lookup`]).
+#[derive(Clone, Copy)]
+struct Looked {
+    key: usize,
+    slot: usize,
+    /// The state already kept under the key, and its total.
+    existing: Option<(usize, f64)>,
+}
+
 /// The best finished sequence of one search, if any.
 pub(super) struct Found {
     total: f64,
@@ -228,6 +237,23 @@ impl<'p> Search<'p> {
         self.problem.options.variety > 0.0
     }
 
+    /// Where `state`, to be kept at `length`, would go: its key, its
+    /// bucket, and the state already there with its total, if any.
+    #[inline(always)]
+    fn lookup(&self, length: u32, state: &State) -> Looked {
+        // Descriptor ids are dense and few: a state's key indexes a table.
+        let key = state.descriptor as usize * self.problem.n() + usize::from(state.piece);
+        let slot = length as usize % self.buckets.len();
+        let bucket = &self.buckets[slot];
+        let existing = bucket.get(key).map(|i| {
+            let cost = bucket.open[i].cost;
+            let total =
+                if self.variety() { cost + self.problem.options.variety * bucket.auto[i].value() } else { cost };
+            (i, total)
+        });
+        Looked { key, slot, existing }
+    }
+
     /// Keeps `state` at `length` unless a cheaper one with the same key is
     /// there. `penalty_floor` is a lower bound of the variety penalty of
     /// `state` (its parent's: the per-lag sums only grow), so the new
@@ -239,18 +265,27 @@ impl<'p> Search<'p> {
         penalty_floor: f64,
         correlation: impl FnOnce() -> Autocorrelation,
     ) -> Result<(), SolveError> {
-        // Descriptor ids are dense and few: a state's key indexes a table.
-        let key = state.descriptor as usize * self.problem.n() + usize::from(state.piece);
-        let slot = length as usize % self.buckets.len();
+        let looked = self.lookup(length, &state);
+        self.add_looked_up(looked, state, penalty_floor, correlation)
+    }
+
+    /// [`Search::add`] once the state has been looked up.
+    #[inline(always)]
+    fn add_looked_up(
+        &mut self,
+        looked: Looked,
+        state: State,
+        penalty_floor: f64,
+        correlation: impl FnOnce() -> Autocorrelation,
+    ) -> Result<(), SolveError> {
+        let Looked { key, slot, existing } = looked;
         let variety = self.variety();
         let beta = self.problem.options.variety;
-        let bucket = &mut self.buckets[slot];
-        if let Some(existing) = bucket.get(key) {
-            let old = &bucket.open[existing];
-            let old_total = if variety { old.cost + beta * bucket.auto[existing].value() } else { old.cost };
+        if let Some((existing, old_total)) = existing {
             if old_total <= state.cost + penalty_floor {
                 return Ok(());
             }
+            let bucket = &mut self.buckets[slot];
             if variety {
                 let correlation = correlation();
                 if state.cost + beta * correlation.value() < old_total {
@@ -296,6 +331,7 @@ impl<'p> Search<'p> {
             self.add(key, state, 0.0, || Autocorrelation::default().push(s, &problem.similarity))?;
         }
         let (mut open, mut autos): (Vec<State>, Vec<Autocorrelation>) = (Vec::new(), Vec::new());
+        let (mut followers, mut looked): (Vec<(u32, State)>, Vec<Looked>) = (Vec::new(), Vec::new());
         for key in first_key..=max_key {
             if problem.stop_at_first && problem.found_any.load(Ordering::Relaxed) {
                 break;
@@ -329,6 +365,7 @@ impl<'p> Search<'p> {
                 if state.length >= self.window.0 {
                     self.consider_end(state, &auto, index);
                 }
+                followers.clear();
                 for k in 0..self.compatible[a].len() {
                     let b = self.compatible[a][k];
                     let next_length = state.length + problem.widths[b];
@@ -344,7 +381,18 @@ impl<'p> Search<'p> {
                     if !self.promising(next.cost + floor, b, next.length) {
                         continue;
                     }
-                    self.add(next_key, next, floor, || auto.push(b, &problem.similarity))?;
+                    followers.push((next_key, next));
+                }
+                // Every follower is looked up before any is kept: their
+                // table slots are scattered over megabytes, and looked up
+                // in a row their cache misses overlap instead of queueing
+                // one after the other. The followers have distinct pieces,
+                // hence distinct keys, so keeping one never moves another.
+                looked.clear();
+                looked.extend(followers.iter().map(|(next_key, next)| self.lookup(*next_key, next)));
+                for (&(_, next), &found) in followers.iter().zip(&looked) {
+                    let b = usize::from(next.piece);
+                    self.add_looked_up(found, next, floor, || auto.push(b, &problem.similarity))?;
                 }
             }
         }
