@@ -101,3 +101,34 @@ fn a_piece_with_hundreds_of_parts_keeps_them_apart() {
     assert_eq!(first.descriptor.closed_components(), parts - 1);
     assert_eq!(first.descriptor.components(), parts);
 }
+
+/// Clipping a strip out of a drawing overlays only the rings that reach the
+/// strip; the pieces must come out exactly, to the last bit, as intersecting
+/// the whole drawing with the strip gives them.
+#[test]
+fn clipping_a_strip_gives_exactly_what_intersecting_the_whole_drawing_does() {
+    use tracery_core::DVec2;
+    use tracery_core::geom::{Polygon, Rect, Region, clip_to_rect, intersection};
+    let mut strips = 0;
+    for name in BUILTIN_NAMES {
+        let exemplar = builtin(name).unwrap();
+        let set = PieceSet::new(&exemplar, &SliceOptions::default()).unwrap();
+        let (width, b) = (exemplar.width(), exemplar.bounds);
+        let margin = exemplar.height().max(width);
+        // The pieces' own strips, and strips of other widths cutting the
+        // drawing anywhere (through rings, between them, past its ends).
+        let mut spans: Vec<(f64, f64)> = set.pieces.iter().map(|p| (p.u_start, p.u_start + p.width)).collect();
+        spans.extend((0..12).map(|k| (width * (k as f64 * 0.093 - 0.05), width * (k as f64 * 0.093 + 0.11))));
+        for (a, c) in spans {
+            let rect = Rect::new(DVec2::new(a, b.min.y - margin), DVec2::new(c, b.max.y + margin));
+            let strip = Region::new(vec![Polygon { outer: rect.corners().to_vec(), holes: vec![] }]);
+            assert_eq!(
+                clip_to_rect(&exemplar.region, &rect),
+                intersection(&exemplar.region, &strip),
+                "{name} [{a}, {c}]"
+            );
+            strips += 1;
+        }
+    }
+    assert!(strips > 100);
+}
