@@ -135,6 +135,8 @@ pub fn clip_to_rect(region: &Region, rect: &Rect) -> Region {
         return Region::default();
     }
     let capacity = reaching.iter().map(Vec::len).sum::<usize>() + clip.len();
+    // `unsafe_add_source` (a safe function) asks that every point lie within
+    // the adapter's box: it was fitted to all of them.
     let shapes = FloatOverlay::<[f64; 2], i64>::with_adapter(adapter, capacity)
         .unsafe_add_source(&reaching, ShapeType::Subject)
         .unsafe_add_source(&clip, ShapeType::Clip)
