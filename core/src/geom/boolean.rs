@@ -124,13 +124,13 @@ pub fn clip_to_rect(region: &Region, rect: &Rect) -> Region {
     let clip = to_contour(&rect.corners());
     // The grid `overlay_as` would fit to the subject and the clip together.
     let adapter = FloatPointAdapter::with_iter_conservative(subject.iter().flatten().chain(clip.iter()));
-    let reaches = |contour: &&Contour| {
-        let (lo, hi) = contour.iter().fold(([f64::INFINITY; 2], [f64::NEG_INFINITY; 2]), |(lo, hi), p| {
-            ([lo[0].min(p[0]), lo[1].min(p[1])], [hi[0].max(p[0]), hi[1].max(p[1])])
-        });
-        lo[0] <= rect.max.x && hi[0] >= rect.min.x && lo[1] <= rect.max.y && hi[1] >= rect.min.y
-    };
-    let reaching: Vec<Contour> = subject.iter().filter(reaches).cloned().collect();
+    // `subject` holds the rings in the region's order.
+    let reaching: Vec<Contour> = region
+        .rings()
+        .zip(&subject)
+        .filter(|(ring, _)| Rect::from_points(ring.iter().copied()).is_some_and(|b| b.overlaps(rect)))
+        .map(|(_, contour)| contour.clone())
+        .collect();
     if reaching.is_empty() {
         return Region::default();
     }

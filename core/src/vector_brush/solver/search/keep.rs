@@ -1,6 +1,7 @@
 //! Keeping a new state in its length's table, or not: the state already
 //! under its key is kept where it costs no more.
 
+use super::narrowing::total;
 use super::{Search, State};
 use crate::vector_brush::{Autocorrelation, SolveError};
 
@@ -22,12 +23,8 @@ impl Search<'_> {
         let key = state.descriptor as usize * self.problem.n() + usize::from(state.piece);
         let slot = length as usize % self.buckets.len();
         let bucket = &self.buckets[slot];
-        let existing = bucket.get(key).map(|i| {
-            let cost = bucket.open[i].cost;
-            let total =
-                if self.variety() { cost + self.problem.options.variety * bucket.auto[i].value() } else { cost };
-            (i, total)
-        });
+        let beta = self.problem.options.variety;
+        let existing = bucket.get(key).map(|i| (i, total(&bucket.open, &bucket.auto, beta, i)));
         Looked { key, slot, existing }
     }
 
