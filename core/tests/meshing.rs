@@ -77,7 +77,7 @@ fn circle(centre: DVec2, radius: f64, n: usize, clockwise: bool) -> Vec<DVec2> {
 }
 
 #[test]
-fn a_large_pattern_triangulated_in_slabs_is_one_sound_body_of_its_own_volume() {
+fn a_large_pattern_along_a_loop_is_one_sound_body_of_its_own_volume() {
     // Like a pattern along a loop: one outline whose bounds hold everything,
     // tens of thousands of vertices, holes everywhere (some with islands),
     // and a wavy rim that crosses any vertical line many times.
@@ -112,8 +112,6 @@ fn a_large_pattern_triangulated_in_slabs_is_one_sound_body_of_its_own_volume() {
     let mesh = extrude(&region, thickness_mm).unwrap();
     mesh.sanity_check().unwrap();
     assert_eq!(mesh.shell_count(), 1 + 80);
-    // The slabs' cut lines add vertices where they cross the outlines.
-    assert!(mesh.vertices.len() > 2 * vertices, "{} vertices for {vertices} outline points", mesh.vertices.len());
     let expected = region.area() * thickness_mm;
     assert!((mesh.signed_volume() - expected).abs() < 1e-6 * expected, "{} against {expected}", mesh.signed_volume());
 }

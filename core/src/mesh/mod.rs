@@ -13,6 +13,7 @@ mod rings;
 mod sanity;
 mod short_edges;
 mod slabs;
+mod swept_faces;
 mod thicken;
 mod triangle_mesh;
 
