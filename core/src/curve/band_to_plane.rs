@@ -106,8 +106,9 @@ pub fn map_along_within(band_region: &Region, scale: f64, curve: &Curve, toleran
     let place = |cursor: &CurveCursor, p: DVec2| {
         let mut u = p.x * scale;
         // The end of a loop is its start: the same point, to the last bit,
-        // so that the closing seam welds.
-        if closed && (u - length).abs() <= 1e-9 * length {
+        // so that the closing seam welds (a union's grid may have left
+        // either side a few ulps off its line).
+        if closed && ((u - length).abs() <= 1e-9 * length || u.abs() <= 1e-9 * length) {
             u = 0.0;
         }
         cursor.map(u, p.y * scale * narrowing(u))
@@ -148,7 +149,7 @@ pub fn map_along_within(band_region: &Region, scale: f64, curve: &Curve, toleran
         let area = signed_area(&outline.points).abs();
         separate += if std::mem::replace(&mut outer_seen[outline.polygon], true) { -area } else { area };
     }
-    let region = joined_without_union(band_region.polygons.len(), &outlines).unwrap_or_else(|| {
+    let region = joined_without_union(band_region.polygons.len(), &outlines, None).unwrap_or_else(|| {
         let mut mapped: Vec<Polygon> = band_region.polygons.iter().map(|_| Polygon::default()).collect();
         for outline in outlines {
             let polygon = &mut mapped[outline.polygon];

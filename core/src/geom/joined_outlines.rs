@@ -49,7 +49,12 @@ struct Run {
 ///
 /// Outlines keep their orientation when the sum of their areas is
 /// positive, and are all reversed when it is negative (a mirroring map).
-pub(crate) fn joined_without_union(polygons: usize, rings: &[Outline]) -> Option<Region> {
+///
+/// `ends` gives the `x` of a band's two ends where they are a loop's
+/// closing seam, which is joined later by the exact bits of its points:
+/// the polygons reaching either end then go through a union together or
+/// not at all, so that its grid rounds both sides' points alike.
+pub(crate) fn joined_without_union(polygons: usize, rings: &[Outline], ends: Option<[f64; 2]>) -> Option<Region> {
     if rings.iter().any(|r| r.points.len() < 3 || r.lines.len() != r.points.len() || r.polygon >= polygons) {
         return None;
     }
@@ -187,14 +192,16 @@ pub(crate) fn joined_without_union(polygons: usize, rings: &[Outline]) -> Option
     for (group, ring) in holes {
         polygons[*polygon_of_group.get(&group)?].holes.push(ring);
     }
-    Some(resolved(polygons))
+    Some(resolved(polygons, ends))
 }
 
 /// `polygons` as a clean region: those whose rings cross or touch (their
 /// own or another's) resolved by a union of just them, the others kept
 /// as they are. One bad seam on a pattern of thousands of rings costs a
-/// union of the few polygons at it, not of the whole pattern.
-fn resolved(polygons: Vec<Polygon>) -> Region {
+/// union of the few polygons at it, not of the whole pattern. Where one
+/// of them reaches one of the `ends` (see [`joined_without_union`]), every
+/// polygon reaching an end goes into the union with it.
+fn resolved(polygons: Vec<Polygon>, ends: Option<[f64; 2]>) -> Region {
     let all: Vec<&Vec<DVec2>> = polygons.iter().flat_map(Polygon::rings).collect();
     let meeting = meeting_rings(&all);
     if !meeting.contains(&true) {
@@ -207,6 +214,14 @@ fn resolved(polygons: Vec<Polygon>) -> Region {
         let crosses = meeting[ring..ring + count].contains(&true);
         ring += count;
         if crosses { crossed.push(polygon) } else { apart.push(polygon) }
+    }
+    if let Some([a, b]) = ends {
+        let reaches_end = |polygon: &Polygon| polygon.rings().flatten().any(|p| p.x == a || p.x == b);
+        if crossed.iter().any(reaches_end) {
+            let (at_ends, others): (Vec<Polygon>, Vec<Polygon>) = apart.into_iter().partition(reaches_end);
+            crossed.extend(at_ends);
+            apart = others;
+        }
     }
     apart.extend(union(&[&Region::new(crossed)]).polygons);
     Region { polygons: apart }
@@ -318,7 +333,7 @@ mod tests {
     }
 
     fn joined(band: &Region, map: &dyn Fn(DVec2) -> DVec2, length: Option<f64>) -> Option<Region> {
-        joined_without_union(band.polygons.len(), &outlines(band, map, length))
+        joined_without_union(band.polygons.len(), &outlines(band, map, length), None)
     }
 
     #[test]
@@ -418,5 +433,43 @@ mod tests {
         // The square apart keeps its mapped points to the last bit.
         let apart = &outlines(&band, &bend, None)[2].points;
         assert!(region.polygons.iter().any(|p| &p.outer == apart));
+    }
+
+    #[test]
+    fn a_union_at_one_end_of_a_loop_rounds_the_other_end_alike() {
+        // The band's first part overlaps a second one, so both go through a
+        // union, whose grid moves their points by an ulp or so; the part at
+        // the band's other end, the other side of the loop's closing seam,
+        // must come out with the very same heights there, or the seam
+        // cannot weld. (Values the union's grid was seen to move.)
+        let (start, low, high) = (560.472_230_563_426_6, -1.335_737_409_679_780_3, 0.825_631_061_718_810_4);
+        let end = start + 40.0;
+        let rect = |x0: f64, x1: f64, y0: f64, y1: f64| {
+            vec![DVec2::new(x0, y0), DVec2::new(x1, y0), DVec2::new(x1, y1), DVec2::new(x0, y1)]
+        };
+        let band = Region::new(
+            [
+                rect(start, start + 3.0, low, high),
+                rect(start + 2.0, start + 4.0, -0.3, 0.3),
+                rect(start + 30.0, end, low, high),
+            ]
+            .into_iter()
+            .map(|outer| Polygon { outer, holes: Vec::new() })
+            .collect(),
+        );
+        let heights_at = |region: &Region, x: f64| {
+            let mut ys: Vec<u64> =
+                region.rings().flatten().filter(|p| (p.x - x).abs() < 1e-9).map(|p| p.y.to_bits()).collect();
+            ys.sort_unstable();
+            ys
+        };
+        let rings = outlines(&band, &|p| p, None);
+        let region = joined_without_union(band.polygons.len(), &rings, Some([start, end])).expect("resolved");
+        assert_eq!(region.polygons.len(), 2);
+        assert_eq!(heights_at(&region, start).len(), 2);
+        assert_eq!(heights_at(&region, start), heights_at(&region, end));
+        // Without the ends, only the first part is rounded, and the two sides part.
+        let apart = joined_without_union(band.polygons.len(), &rings, None).expect("resolved");
+        assert_ne!(heights_at(&apart, start), heights_at(&apart, end));
     }
 }

@@ -228,7 +228,11 @@ const SPLITS_NEAR_CUT: [f64; 4] = [0.125, 0.25, 0.5, 1.0];
 /// seams, where both sides of a cut have the same points to the last bit:
 /// joined there without a boolean ([`joined_without_union`]) unless that
 /// cannot vouch for the result (pieces that overlap or only nearly meet).
-fn joined_pieces(polygons: Vec<Polygon>, seams_u: &[f64]) -> Region {
+///
+/// `ends` are the `u` of a loop's two ends, its closing seam, which is
+/// welded once mapped by the exact bits of its points on both sides
+/// ([`joined_without_union`]); `None` on an open curve.
+fn joined_pieces(polygons: Vec<Polygon>, seams_u: &[f64], ends: Option<[f64; 2]>) -> Region {
     let line_of: FxHashMap<u64, u32> = seams_u.iter().enumerate().map(|(k, u)| (u.to_bits(), k as u32)).collect();
     let outlines: Vec<Outline> = polygons
         .iter()
@@ -240,7 +244,7 @@ fn joined_pieces(polygons: Vec<Polygon>, seams_u: &[f64]) -> Region {
             lines: ring.iter().map(|q| line_of.get(&q.x.to_bits()).copied()).collect(),
         })
         .collect();
-    joined_without_union(polygons.len(), &outlines).unwrap_or_else(|| union(&[&Region::new(polygons)]))
+    joined_without_union(polygons.len(), &outlines, ends).unwrap_or_else(|| union(&[&Region::new(polygons)]))
 }
 
 /// Pushes onto `out` where to split the edge from `a` to `b`, as
@@ -502,6 +506,7 @@ pub fn stitch(
     let (polygons, distortions): (Vec<Vec<Polygon>>, Vec<Distortion>) =
         pieces.par_iter().enumerate().map(deformed).unzip();
     let seams = seam_u[1..n].to_vec();
-    let region = joined_pieces(polygons.into_iter().flatten().collect(), &seams);
+    let ends = (curve == CurveKind::Closed).then_some([0.0, length]);
+    let region = joined_pieces(polygons.into_iter().flatten().collect(), &seams, ends);
     BandPattern { region, length, seams, curve, distortion: Distortion::join(distortions) }
 }
