@@ -64,16 +64,7 @@ fn rings_that_cross_in_one_group_are_still_refused_or_repaired() {
 }
 
 fn circle(centre: DVec2, radius: f64, n: usize, clockwise: bool) -> Vec<DVec2> {
-    let mut ring: Vec<DVec2> = (0..n)
-        .map(|k| {
-            let t = std::f64::consts::TAU * k as f64 / n as f64;
-            centre + radius * DVec2::new(t.cos(), t.sin())
-        })
-        .collect();
-    if clockwise {
-        ring.reverse();
-    }
-    ring
+    star(centre, &vec![radius; n], 0.0, clockwise)
 }
 
 #[test]

@@ -279,7 +279,7 @@ fn solid(points: &[Point2<f64>], rings: &[Vec<usize>], faces: Vec<[u32; 3]>, thi
     mesh.vertices.extend(points.iter().map(|p| [p.x, p.y, 0.0]));
     mesh.vertices.extend(points.iter().map(|p| [p.x, p.y, thickness_mm]));
     for [a, b, c] in faces {
-        // Spade's faces run counter-clockwise: the top faces up.
+        // The faces run counter-clockwise: the top faces up.
         mesh.triangles.push([a + count, b + count, c + count]);
         mesh.triangles.push([a, c, b]);
     }
@@ -500,24 +500,14 @@ mod tests {
         (points, vec![(0..n).collect(), (n..2 * n).collect()])
     }
 
-    fn area(points: &[Point2<f64>], faces: &[[u32; 3]]) -> f64 {
-        faces
-            .iter()
-            .map(|t| {
-                let [a, b, c] = t.map(|i| points[i as usize]);
-                0.5 * ((b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x))
-            })
-            .sum()
+    /// Signed area of the polygon through `points` at `indices`.
+    fn ring_area(points: &[Point2<f64>], indices: impl IntoIterator<Item = usize>) -> f64 {
+        let ring: Vec<glam::DVec2> = indices.into_iter().map(|i| glam::DVec2::new(points[i].x, points[i].y)).collect();
+        crate::geom::signed_area(&ring)
     }
 
-    fn ring_area(points: &[Point2<f64>], ring: &[usize]) -> f64 {
-        let n = ring.len();
-        (0..n)
-            .map(|k| {
-                let (a, b) = (points[ring[k]], points[ring[(k + 1) % n]]);
-                0.5 * (a.x * b.y - b.x * a.y)
-            })
-            .sum()
+    fn area(points: &[Point2<f64>], faces: &[[u32; 3]]) -> f64 {
+        faces.iter().map(|t| ring_area(points, t.map(|i| i as usize))).sum()
     }
 
     #[test]
@@ -525,7 +515,7 @@ mod tests {
         // The sweep takes such outlines; the constrained triangulation is
         // what it falls back on, so it is checked on its own.
         let (mut points, mut rings) = wavy_loop(12_000);
-        let expected: f64 = rings.iter().map(|r| ring_area(&points, r)).sum();
+        let expected: f64 = rings.iter().map(|r| ring_area(&points, r.iter().copied())).sum();
         let before = points.len();
         let faces = constrained_faces(&mut points, &mut rings).expect("a simple outline");
         // The slabs' cut lines add points where they cross the rims.
@@ -538,7 +528,7 @@ mod tests {
     #[test]
     fn the_sweep_fills_a_large_loop_with_its_own_points() {
         let (points, rings) = wavy_loop(12_000);
-        let expected: f64 = rings.iter().map(|r| ring_area(&points, r)).sum();
+        let expected: f64 = rings.iter().map(|r| ring_area(&points, r.iter().copied())).sum();
         let faces = swept_faces(&flat(&points), &rings, &[0, 0]).expect("a simple outline");
         // n + 2h − 2 triangles on the outline's own points.
         assert_eq!(faces.len(), points.len());

@@ -210,13 +210,7 @@ mod tests {
     }
 
     fn area(points: &[DVec2], triangles: &[[u32; 3]]) -> f64 {
-        triangles
-            .iter()
-            .map(|t| {
-                let [a, b, c] = t.map(|i| points[i as usize]);
-                0.5 * (b - a).perp_dot(c - a)
-            })
-            .sum()
+        triangles.iter().map(|t| crate::geom::signed_area(&t.map(|i| points[i as usize]))).sum()
     }
 
     #[test]
