@@ -4,8 +4,6 @@
 
 use std::sync::atomic::{AtomicBool, AtomicUsize, Ordering};
 
-use rayon::prelude::*;
-
 mod band;
 mod bound;
 mod cap;
@@ -13,12 +11,14 @@ mod dominance;
 mod finish;
 mod keep;
 mod narrowing;
+mod schedule;
 mod topology;
 
 use band::{MAX_HOLD, band_allowance};
 use bound::CompletionBound;
 use finish::finish;
 use keep::Looked;
+use schedule::in_order_of_size;
 use topology::leave_out_what_loops_cannot_cross;
 pub(super) use topology::{Topology, search_all};
 
@@ -528,8 +528,7 @@ pub(super) fn search_with(
                 problem.search(&starts, 0, window)?
             }
             CurveKind::Closed => {
-                let results: Vec<Result<Option<Found>, SolveError>> =
-                    (0..n).into_par_iter().map(|s| problem.search(&[s], problem.rank[s], window)).collect();
+                let results = in_order_of_size(&order, |s| problem.search(&[s], problem.rank[s], window));
                 let mut best: Option<Found> = None;
                 for r in results {
                     if let Some(f) = r?
