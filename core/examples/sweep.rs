@@ -276,14 +276,13 @@ fn contact_sheets(runs: &[Run], curves: &[String], target: &str, dir: &std::path
         // Tiles shaped like the curve's patterns: a wave in a line's strip
         // came out a fifth of the tile's width.
         let aspect = shown[0].region.as_ref().and_then(|r| r.bounds()).map_or(0.0, |b| b.height() / b.width());
-        let (tile_w, tile_h, columns) =
-            if aspect > 0.6 {
-                (300, 300, 6)
-            } else if aspect > 0.15 {
-                (600, (600.0 * aspect) as u32, 3)
-            } else {
-                (1000, (1000.0 * aspect).max(90.0) as u32, 2)
-            };
+        let (tile_w, tile_h, columns) = if aspect > 0.6 {
+            (300, 300, 6)
+        } else if aspect > 0.15 {
+            (600, (600.0 * aspect) as u32, 3)
+        } else {
+            (1000, (1000.0 * aspect).max(90.0) as u32, 2)
+        };
         let mut index = String::new();
         let mut tiles = Vec::new();
         for (k, run) in shown.iter().enumerate() {
