@@ -36,14 +36,19 @@ const GRID_BITS: i32 = 56;
 /// counter-clockwise, as indices into `points`. `None` where this cannot
 /// vouch for them:
 /// - rings that cross or touch, or run the wrong way round;
+/// - rings nested the wrong way: a part inside another part's material
+///   rather than in a hole of it, or a hole outside its own part;
 /// - two points on one point of the integer grid it works on;
 /// - triangles that are not all strictly counter-clockwise, or whose
 ///   unshared edges are not exactly the rings' edges, each once.
 ///
 /// Triangles that all turn the same way and whose boundary is the rings
-/// cover each point as often as the rings wind around it, once inside
-/// the material of rings that neither cross nor touch: so what passes is
-/// a triangulation of the region, whatever the sweep did.
+/// cover each point as often as the rings wind around it. With rings that
+/// neither cross nor touch and are nested as a region's are, that is once
+/// inside the material and nowhere else: so what passes is a triangulation
+/// of the region, whatever the sweep did. (Rings that merely do not meet
+/// can still wind twice round a point: a part lying whole inside another
+/// part's material.)
 pub(super) fn swept_faces(points: &[DVec2], rings: &[Vec<usize>], polygon_of: &[usize]) -> Option<Vec<[u32; 3]>> {
     if rings.is_empty() || polygon_of.len() != rings.len() {
         return None;
@@ -68,7 +73,7 @@ pub(super) fn swept_faces(points: &[DVec2], rings: &[Vec<usize>], polygon_of: &[
         return None;
     }
     let outlines: Vec<Vec<DVec2>> = rings.iter().map(|ring| ring.iter().map(|&i| points[i]).collect()).collect();
-    if rings_meet(&outlines) {
+    if rings_meet(&outlines) || !nested_as_a_region(&grid, rings, polygon_of) {
         return None;
     }
     let mut next = vec![u32::MAX; points.len()];
@@ -123,6 +128,112 @@ fn twice_area(grid: &Grid, ring: &[usize]) -> i128 {
             i128::from(a.x) * i128::from(b.y) - i128::from(b.x) * i128::from(a.y)
         })
         .sum()
+}
+
+/// Whether rings that neither cross nor touch wind once round the inside of
+/// the material and nowhere else: the other rings wind round a point of an
+/// outer ring no times, and round a point of a hole once. Each face between
+/// the rings then has a winding of 0 or 1, since it lies just inside or just
+/// outside some ring, the unbounded one at 0. (The sweep itself must not
+/// see rings nested otherwise: it does not check what it is given.)
+///
+/// The winding at each ring's first point is counted exactly on the grid
+/// (a ray towards `+x`, edges crossing its height half-open), over the
+/// edges of the rings whose bounds hold some other ring's point, filed by
+/// height: the others wind round no such point.
+fn nested_as_a_region(grid: &Grid, rings: &[Vec<usize>], polygon_of: &[usize]) -> bool {
+    let at = |i: usize| grid.points[i];
+    // A polygon's first ring is its outer one.
+    let outer = |r: usize| r == 0 || polygon_of[r] != polygon_of[r - 1];
+    let mut queries: Vec<(i64, i64, usize)> =
+        (0..rings.len()).map(|r| (at(rings[r][0]).x, at(rings[r][0]).y, r)).collect();
+    queries.sort_unstable();
+    let bounds = |ring: &[usize]| {
+        ring.iter().map(|&i| at(i)).fold((i64::MAX, i64::MIN, i64::MAX, i64::MIN), |(x0, x1, y0, y1), p| {
+            (x0.min(p.x), x1.max(p.x), y0.min(p.y), y1.max(p.y))
+        })
+    };
+    let containers: Vec<usize> = (0..rings.len())
+        .into_par_iter()
+        .filter(|&r| {
+            let (x0, x1, y0, y1) = bounds(&rings[r]);
+            let from = queries.partition_point(|q| q.0 < x0);
+            queries[from..].iter().take_while(|q| q.0 <= x1).any(|q| q.2 != r && (y0..=y1).contains(&q.1))
+        })
+        .collect();
+    if containers.is_empty() {
+        // No ring winds round another's point: every ring must be outer.
+        return (0..rings.len()).all(outer);
+    }
+    let edges_of = |r: usize| {
+        let ring = &rings[r];
+        (0..ring.len()).map(move |k| (r as u32, ring[k] as u32, ring[(k + 1) % ring.len()] as u32))
+    };
+    let (low, high) = containers
+        .iter()
+        .flat_map(|&r| rings[r].iter())
+        .map(|&i| at(i).y)
+        .fold((i64::MAX, i64::MIN), |(l, h), y| (l.min(y), h.max(y)));
+    // Rows about twice an edge's mean height: an edge is filed under every
+    // row it spans, and a row holds the edges crossing its height.
+    let edges: usize = containers.iter().map(|&r| rings[r].len()).sum();
+    let rise: i128 = containers
+        .iter()
+        .flat_map(|&r| edges_of(r))
+        .map(|(_, a, b)| i128::from(at(a as usize).y.abs_diff(at(b as usize).y)))
+        .sum();
+    let height = i128::from(high) - i128::from(low);
+    let rows = (height * edges as i128 / (2 * rise).max(1)).clamp(1, edges as i128) as usize;
+    // Any rule that never files a lower height in a later row will do: an
+    // edge spanning a height is then filed in that height's row.
+    let per_row = rows as f64 / (height as f64 + 1.0);
+    let row_of = |y: i64| (((y - low) as f64 * per_row) as usize).min(rows - 1);
+    let span_of = |(_, a, b): (u32, u32, u32)| {
+        let (ya, yb) = (at(a as usize).y, at(b as usize).y);
+        row_of(ya.min(yb))..=row_of(ya.max(yb))
+    };
+    // Filed in one array, row after row (counted first, then placed): a
+    // list per row cost an allocation for every few edges.
+    let mut first = vec![0_usize; rows + 1];
+    for edge in containers.iter().flat_map(|&r| edges_of(r)) {
+        for row in span_of(edge) {
+            first[row + 1] += 1;
+        }
+    }
+    for row in 0..rows {
+        first[row + 1] += first[row];
+    }
+    let mut filled = first.clone();
+    let mut filed = vec![(0_u32, 0_u32, 0_u32); first[rows]];
+    for edge in containers.iter().flat_map(|&r| edges_of(r)) {
+        for row in span_of(edge) {
+            filed[filled[row]] = edge;
+            filled[row] += 1;
+        }
+    }
+    queries.par_iter().all(|&(x, y, r)| {
+        let expected = if outer(r) { 0 } else { 1 };
+        if y < low || y > high {
+            return expected == 0;
+        }
+        let row = row_of(y);
+        let winding: i64 = filed[first[row]..first[row + 1]]
+            .iter()
+            .filter(|&&(other, _, _)| other as usize != r)
+            .map(|&(_, a, b)| {
+                let (a, b) = (at(a as usize), at(b as usize));
+                let side = i128::from(b.x - a.x) * i128::from(y - a.y) - i128::from(b.y - a.y) * i128::from(x - a.x);
+                if a.y <= y && y < b.y && side > 0 {
+                    1
+                } else if b.y <= y && y < a.y && side < 0 {
+                    -1
+                } else {
+                    0
+                }
+            })
+            .sum();
+        winding == expected
+    })
 }
 
 /// The triangles of `polygons`, checked as [`swept_faces`] says. `next`
@@ -236,6 +347,22 @@ mod tests {
         // A hole running the way of an outer ring.
         let (points, rings, polygon_of) = indexed(&[vec![square(0.0, 0.0, 4.0), square(1.0, 1.0, 2.0)]]);
         assert!(swept_faces(&points, &rings, &polygon_of).is_none());
+        // A part whole inside another's material, not in a hole of it:
+        // the rings do not meet, but wind twice round the inner part.
+        let (points, rings, polygon_of) = indexed(&[vec![square(0.0, 0.0, 4.0)], vec![square(1.0, 1.0, 1.0)]]);
+        assert!(swept_faces(&points, &rings, &polygon_of).is_none());
+        // A hole outside its own part.
+        let mut hole = square(6.0, 0.0, 1.0);
+        hole.reverse();
+        let (points, rings, polygon_of) = indexed(&[vec![square(0.0, 0.0, 4.0), hole]]);
+        assert!(swept_faces(&points, &rings, &polygon_of).is_none());
+        // An island in a hole, and a part beside the frame at the island's
+        // height, are nested as a region's are.
+        let mut hole = square(1.0, 1.0, 2.0);
+        hole.reverse();
+        let (points, rings, polygon_of) =
+            indexed(&[vec![square(0.0, 0.0, 4.0), hole], vec![square(1.5, 1.5, 1.0)], vec![square(-3.0, 1.5, 1.0)]]);
+        assert!(swept_faces(&points, &rings, &polygon_of).is_some());
         // A bow tie.
         let bow = vec![DVec2::ZERO, DVec2::X, DVec2::Y, DVec2::ONE];
         let (points, rings, polygon_of) = indexed(&[vec![bow]]);
