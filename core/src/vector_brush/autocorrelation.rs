@@ -50,10 +50,11 @@ impl Default for Autocorrelation {
 #[derive(Clone, Debug)]
 pub struct Similarity {
     table: [u16; 256],
-    /// The first [`NEAR`] entries, where every farther one rounds to zero
-    /// (σ = 0.5 gives 256, 35, 5, 1, then zeros): adding a piece then
-    /// needs no table lookups, and runs on every lag at once.
-    near: Option<[u32; NEAR]>,
+    /// The entries for distances 1 to 3, where distance 0 adds 256 (one
+    /// whole match) and every farther one rounds to zero (σ = 0.5 gives
+    /// 256, 35, 5, 1, then zeros): adding a piece then needs no table
+    /// lookups, and runs on sixteen lags at once in bytes.
+    near: Option<[u8; NEAR - 1]>,
 }
 
 /// How many distances can be told apart without the table (see [`Similarity`]).
@@ -63,7 +64,9 @@ impl Similarity {
     /// The table for a given `σ` (the paper uses 0.5).
     pub fn new(sigma: f64) -> Self {
         let table: [u16; 256] = std::array::from_fn(|d| ((-(d as f64) / sigma).exp() * SCALE).round() as u16);
-        let near = table[NEAR..].iter().all(|&t| t == 0).then(|| std::array::from_fn(|d| u32::from(table[d])));
+        let near =
+            (table[0] == 256 && table[1..NEAR].iter().all(|&t| t < 256) && table[NEAR..].iter().all(|&t| t == 0))
+                .then(|| std::array::from_fn(|d| table[d + 1] as u8));
         Similarity { table, near }
     }
 }
@@ -87,6 +90,22 @@ fn shifted_in(history: &[u8; LAGS], p: u8) -> [u8; LAGS] {
     out
 }
 
+/// The largest of the sums. Taken as signed after flipping the top bit,
+/// which keeps their order: SSE2 compares signed 32-bit lanes only, and
+/// the unsigned maximum compiled to one scalar compare per lag.
+#[inline(always)]
+fn max_of(sums: &[u32; LAGS]) -> u32 {
+    const TOP: u32 = 1 << 31;
+    // Four lanes side by side, then across: a plain fold is one long chain.
+    let mut lanes = [i32::MIN; 4];
+    for chunk in sums.chunks_exact(4) {
+        for (lane, &s) in lanes.iter_mut().zip(chunk) {
+            *lane = (*lane).max((s ^ TOP) as i32);
+        }
+    }
+    (lanes.into_iter().fold(i32::MIN, i32::max) as u32) ^ TOP
+}
+
 impl Autocorrelation {
     /// The autocorrelation of the sequence extended by `piece`.
     #[inline]
@@ -100,20 +119,21 @@ impl Autocorrelation {
             // every lag, which the compiler runs side by side. Most states
             // of a long search are of this kind.
             Some(near) if usize::from(self.filled) == LAGS => {
-                for (sum, &h) in sums.iter_mut().zip(self.history.iter()) {
-                    let d = h.abs_diff(p);
-                    let add = if d == 0 {
-                        near[0]
-                    } else if d == 1 {
-                        near[1]
-                    } else if d == 2 {
-                        near[2]
-                    } else if d == 3 {
-                        near[3]
-                    } else {
-                        0
-                    };
-                    *sum = sum.saturating_add(add);
+                // Each lag's addition worked out in bytes, sixteen lags to
+                // an SSE2 register: the low byte for distances 1 to 3, the
+                // high byte (256) for a match. Worked out in 32-bit lanes,
+                // the same steps took a fifth of a large loop search's
+                // time in `perf`.
+                let [n1, n2, n3] = near;
+                let mut low = [0u8; LAGS];
+                let mut high = [0u8; LAGS];
+                for ((l, h), &older) in low.iter_mut().zip(high.iter_mut()).zip(self.history.iter()) {
+                    let d = older.max(p) - older.min(p);
+                    *l = (if d == 1 { n1 } else { 0 }) | (if d == 2 { n2 } else { 0 }) | (if d == 3 { n3 } else { 0 });
+                    *h = u8::from(d == 0);
+                }
+                for ((sum, &l), &h) in sums.iter_mut().zip(low.iter()).zip(high.iter()) {
+                    *sum = sum.saturating_add(u32::from(u16::from_le_bytes([l, h])));
                 }
             }
             _ => {
@@ -124,7 +144,7 @@ impl Autocorrelation {
         }
         Autocorrelation {
             history: shifted_in(&self.history, p),
-            max: sums.iter().copied().fold(0, u32::max),
+            max: max_of(&sums),
             sums,
             filled: (self.filled + 1).min(LAGS as u8),
         }
@@ -177,6 +197,8 @@ mod tests {
             .collect();
         for sigma in [0.5, 1.0, 40.0] {
             let similarity = Similarity::new(sigma);
+            // σ = 0.5 takes the byte-wise path, the others the table.
+            assert_eq!(similarity.near.is_some(), sigma == 0.5);
             for len in [0, 1, 5, 31, 32, 33, 300] {
                 let running = Autocorrelation::of(&sequence[..len], &similarity);
                 let expected = sums_by_definition(&sequence[..len], &similarity);
