@@ -42,7 +42,7 @@ pub struct Autocorrelation {
 
 impl Default for Autocorrelation {
     fn default() -> Self {
-        Autocorrelation { history: [0; LAGS], sums: [0; LAGS], filled: 0, max: 0 }
+        Autocorrelation::EMPTY
     }
 }
 
@@ -107,6 +107,9 @@ fn max_of(sums: &[u32; LAGS]) -> u32 {
 }
 
 impl Autocorrelation {
+    /// The autocorrelation of the empty sequence.
+    pub const EMPTY: Autocorrelation = Autocorrelation { history: [0; LAGS], sums: [0; LAGS], filled: 0, max: 0 };
+
     /// The autocorrelation of the sequence extended by `piece`.
     #[inline]
     pub fn push(&self, piece: usize, similarity: &Similarity) -> Autocorrelation {
