@@ -19,25 +19,36 @@
 /// most ornaments. With 12 lags the search escaped into cycles of period 13
 /// and 14 (vectorian15: 19 of 24 sweep runs with a period under a third of
 /// the pattern); with 32 it sees every simple cycle. Each open state carries
-/// `LAGS` bytes of history and `4·LAGS` of sums.
+/// `LAGS` bytes of history and `2·LAGS` of sums (as shortfalls).
 pub const LAGS: usize = 32;
 
-/// Fixed-point scale of the per-lag sums. The sums are `u32`: at this scale
-/// they would need sixteen million fully matching pairs at one lag to
-/// saturate, so the penalty keeps growing with the repetition however long
-/// the curve (with `u16` it stopped at 256 pairs, a few hundred pieces).
+/// Fixed-point scale of the per-lag sums. The largest sum is a `u32`: at
+/// this scale it would need sixteen million fully matching pairs at one lag
+/// to saturate, so the penalty keeps growing with the repetition however
+/// long the curve (with `u16` sums it stopped at 256 pairs, a few hundred
+/// pieces).
 const SCALE: f64 = 256.0;
 
-/// Running autocorrelation of a sequence: the last pieces and the sum per lag.
+/// Running autocorrelation of a sequence: the last pieces, the largest sum
+/// over the lags, and how far each lag's sum is below it.
+///
+/// The sums are kept as their shortfalls from the largest, in 16 bits: a
+/// history is then 104 bytes instead of 168 (the search holds one per open
+/// state, and moves it at every step), and sixteen lags fit in one SSE2
+/// register instead of four. A shortfall stops at `u16::MAX`, 256 whole
+/// matches: only a lag that many matches behind the largest and then
+/// catching up all of them would be scored differently, which a pattern of
+/// fewer than 256 pieces cannot do.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct Autocorrelation {
     /// `history[k]` is the piece `k + 1` places before the end.
     history: [u8; LAGS],
-    sums: [u32; LAGS],
+    /// `max` less the sum at lag `k + 1`, at most `u16::MAX`.
+    shortfall: [u16; LAGS],
+    /// The largest of the per-lag sums.
+    max: u32,
     /// How many entries of `history` are filled.
     filled: u8,
-    /// The largest of `sums`, kept so that comparing states is cheap.
-    max: u32,
 }
 
 impl Default for Autocorrelation {
@@ -90,43 +101,39 @@ fn shifted_in(history: &[u8; LAGS], p: u8) -> [u8; LAGS] {
     out
 }
 
-/// The largest of the sums. Taken as signed after flipping the top bit,
-/// which keeps their order: SSE2 compares signed 32-bit lanes only, and
-/// the unsigned maximum compiled to one scalar compare per lag.
+/// The largest of the gains, each at most 256: taken in signed 16-bit
+/// lanes, which SSE2 compares (it has no unsigned 16-bit maximum), four
+/// chains side by side (a plain fold is one long chain).
 #[inline(always)]
-fn max_of(sums: &[u32; LAGS]) -> u32 {
-    const TOP: u32 = 1 << 31;
-    // Four lanes side by side, then across: a plain fold is one long chain.
-    let mut lanes = [i32::MIN; 4];
-    for chunk in sums.chunks_exact(4) {
-        for (lane, &s) in lanes.iter_mut().zip(chunk) {
-            *lane = (*lane).max((s ^ TOP) as i32);
+fn max_of(gains: &[u16; LAGS]) -> u16 {
+    let mut lanes = [0i16; 8];
+    for chunk in gains.chunks_exact(8) {
+        for (lane, &g) in lanes.iter_mut().zip(chunk) {
+            *lane = (*lane).max(g as i16);
         }
     }
-    (lanes.into_iter().fold(i32::MIN, i32::max) as u32) ^ TOP
+    lanes.into_iter().fold(0, i16::max) as u16
 }
 
 impl Autocorrelation {
     /// The autocorrelation of the empty sequence.
-    pub const EMPTY: Autocorrelation = Autocorrelation { history: [0; LAGS], sums: [0; LAGS], filled: 0, max: 0 };
+    pub const EMPTY: Autocorrelation = Autocorrelation { history: [0; LAGS], shortfall: [0; LAGS], max: 0, filled: 0 };
 
     /// The autocorrelation of the sequence extended by `piece`.
     #[inline]
     pub fn push(&self, piece: usize, similarity: &Similarity) -> Autocorrelation {
         let p = piece.min(255) as u8;
-        // Built field by field: copying the whole struct (168 bytes) and
-        // returning it compiled to two calls to `memcpy`.
-        let mut sums = self.sums;
+        // What each lag's sum grows by, at most 256.
+        let mut add = [0u16; LAGS];
         match similarity.near {
             // A full history and a short reach: the same few operations on
             // every lag, which the compiler runs side by side. Most states
             // of a long search are of this kind.
             Some(near) if usize::from(self.filled) == LAGS => {
-                // Each lag's addition worked out in bytes, sixteen lags to
-                // an SSE2 register: the low byte for distances 1 to 3, the
-                // high byte (256) for a match. Worked out in 32-bit lanes,
-                // the same steps took a fifth of a large loop search's
-                // time in `perf`.
+                // Worked out in bytes, sixteen lags to an SSE2 register:
+                // the low byte for distances 1 to 3, the high byte (256)
+                // for a match. Worked out in 32-bit lanes, the same steps
+                // took a fifth of a large loop search's time in `perf`.
                 let [n1, n2, n3] = near;
                 let mut low = [0u8; LAGS];
                 let mut high = [0u8; LAGS];
@@ -135,20 +142,33 @@ impl Autocorrelation {
                     *l = (if d == 1 { n1 } else { 0 }) | (if d == 2 { n2 } else { 0 }) | (if d == 3 { n3 } else { 0 });
                     *h = u8::from(d == 0);
                 }
-                for ((sum, &l), &h) in sums.iter_mut().zip(low.iter()).zip(high.iter()) {
-                    *sum = sum.saturating_add(u32::from(u16::from_le_bytes([l, h])));
+                for ((a, &l), &h) in add.iter_mut().zip(low.iter()).zip(high.iter()) {
+                    *a = u16::from_le_bytes([l, h]);
                 }
             }
             _ => {
-                for (sum, &h) in sums.iter_mut().zip(self.history.iter()).take(usize::from(self.filled)) {
-                    *sum = sum.saturating_add(u32::from(similarity.table[usize::from(h.abs_diff(p))]));
+                for (a, &h) in add.iter_mut().zip(self.history.iter()).take(usize::from(self.filled)) {
+                    *a = similarity.table[usize::from(h.abs_diff(p))];
                 }
             }
         }
+        // The largest sum grows by the most any lag gains on it; every
+        // shortfall grows by that and shrinks by its own lag's gain.
+        let mut gain = [0u16; LAGS];
+        for ((g, &a), &short) in gain.iter_mut().zip(add.iter()).zip(self.shortfall.iter()) {
+            *g = a.saturating_sub(short);
+        }
+        let rise = max_of(&gain);
+        let mut shortfall = [0u16; LAGS];
+        for ((out, &a), &short) in shortfall.iter_mut().zip(add.iter()).zip(self.shortfall.iter()) {
+            // `short + rise >= a` wherever it does not saturate: `rise`
+            // is at least `a - short`.
+            *out = short.saturating_add(rise).saturating_sub(a);
+        }
         Autocorrelation {
             history: shifted_in(&self.history, p),
-            max: max_of(&sums),
-            sums,
+            shortfall,
+            max: self.max.saturating_add(u32::from(rise)),
             filled: (self.filled + 1).min(LAGS as u8),
         }
     }
@@ -205,8 +225,10 @@ mod tests {
             for len in [0, 1, 5, 31, 32, 33, 300] {
                 let running = Autocorrelation::of(&sequence[..len], &similarity);
                 let expected = sums_by_definition(&sequence[..len], &similarity);
-                assert_eq!(running.sums, expected, "σ {sigma}, {len} pieces");
-                assert_eq!(running.max, expected.iter().copied().max().unwrap_or(0));
+                let max = expected.iter().copied().max().unwrap_or(0);
+                assert_eq!(running.max, max, "σ {sigma}, {len} pieces");
+                let sums: Vec<u32> = running.shortfall.iter().map(|&s| max - u32::from(s)).collect();
+                assert_eq!(sums, expected, "σ {sigma}, {len} pieces");
             }
         }
     }
