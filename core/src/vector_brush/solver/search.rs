@@ -293,15 +293,16 @@ impl<'p> Search<'p> {
                     if next_length > max_len {
                         continue;
                     }
-                    // Never below the next key, whatever the rounding: the
-                    // search runs in order of keys.
-                    let next_key = problem.grid.key(next_length).max(key + 1);
                     let Some(next) = self.follow(state, index, key, b) else {
                         continue;
                     };
                     if !self.promising(next.cost + floor, b, next.length) {
                         continue;
                     }
+                    // Never below the next key, whatever the rounding: the
+                    // search runs in order of keys. (Only for the followers
+                    // kept: a division each.)
+                    let next_key = problem.grid.key(next_length).max(key + 1);
                     followers.push((next_key, next));
                 }
                 // Every follower is looked up before any is kept: their
