@@ -273,7 +273,7 @@ impl<'p> Search<'p> {
                 self.keep_cheapest(width, &mut open, &mut autos);
             }
             for (i, state) in open.iter().enumerate() {
-                // Borrowed, not copied: a history is 168 bytes, and the copy
+                // Borrowed, not copied: a history is 104 bytes, and the copy
                 // was a call to `memcpy` for every state expanded.
                 let auto = autos.get(i).unwrap_or(&NO_HISTORY);
                 let a = state.piece as usize;

@@ -225,7 +225,7 @@ impl Bucket {
         }
         // The callers' vectors are empty: swapping hands the states over
         // without copying them (an open state with its variety history is
-        // about 200 bytes), and keeps both allocations for reuse.
+        // 136 bytes), and keeps both allocations for reuse.
         if states.is_empty() {
             std::mem::swap(states, &mut self.open);
         } else {
