@@ -34,7 +34,7 @@ const SCALE: f64 = 256.0;
 ///
 /// The sums are kept as their shortfalls from the largest, in 16 bits: a
 /// history is then 104 bytes instead of 168 (the search holds one per open
-/// state, and moves it at every step), and sixteen lags fit in one SSE2
+/// state, and moves it at every step), and eight lags fit in one SSE2
 /// register instead of four. A shortfall stops at `u16::MAX`, 256 whole
 /// matches: only a lag that many matches behind the largest and then
 /// catching up all of them would be scored differently, which a pattern of
@@ -64,8 +64,8 @@ pub struct Similarity {
     /// The entries for distances 1 to 3, where distance 0 adds 256 (one
     /// whole match) and every farther one rounds to zero (σ = 0.5 gives
     /// 256, 35, 5, 1, then zeros): adding a piece then needs no table
-    /// lookups, and runs on sixteen lags at once in bytes.
-    near: Option<[u8; NEAR - 1]>,
+    /// lookups, and runs on eight lags at once.
+    near: Option<[u16; NEAR - 1]>,
 }
 
 /// How many distances can be told apart without the table (see [`Similarity`]).
@@ -76,8 +76,7 @@ impl Similarity {
     pub fn new(sigma: f64) -> Self {
         let table: [u16; 256] = std::array::from_fn(|d| ((-(d as f64) / sigma).exp() * SCALE).round() as u16);
         let near =
-            (table[0] == 256 && table[1..NEAR].iter().all(|&t| t < 256) && table[NEAR..].iter().all(|&t| t == 0))
-                .then(|| std::array::from_fn(|d| table[d + 1] as u8));
+            (table[0] == 256 && table[NEAR..].iter().all(|&t| t == 0)).then(|| std::array::from_fn(|d| table[d + 1]));
         Similarity { table, near }
     }
 }
@@ -102,7 +101,7 @@ fn shifted_in(history: &[u8; LAGS], p: u8) -> [u8; LAGS] {
 }
 
 /// The largest of the gains, each at most 256: taken in signed 16-bit
-/// lanes, which SSE2 compares (it has no unsigned 16-bit maximum), four
+/// lanes, which SSE2 compares (it has no unsigned 16-bit maximum), eight
 /// chains side by side (a plain fold is one long chain).
 #[inline(always)]
 fn max_of(gains: &[u16; LAGS]) -> u16 {
@@ -134,7 +133,7 @@ impl Autocorrelation {
                 // register: in 32-bit lanes the same steps took a fifth of
                 // a large loop search's time in `perf`, and worked out in
                 // bytes they had to be interleaved one lag at a time.
-                let [n1, n2, n3] = near.map(u16::from);
+                let [n1, n2, n3] = near;
                 for (a, &older) in add.iter_mut().zip(self.history.iter()) {
                     let d = u16::from(older.max(p) - older.min(p));
                     *a = (if d == 0 { 256 } else { 0 })
@@ -217,7 +216,7 @@ mod tests {
             .collect();
         for sigma in [0.5, 1.0, 40.0] {
             let similarity = Similarity::new(sigma);
-            // σ = 0.5 takes the byte-wise path, the others the table.
+            // σ = 0.5 takes the path without the table, the others the table.
             assert_eq!(similarity.near.is_some(), sigma == 0.5);
             for len in [0, 1, 5, 31, 32, 33, 300] {
                 let running = Autocorrelation::of(&sequence[..len], &similarity);

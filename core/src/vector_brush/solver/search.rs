@@ -275,7 +275,7 @@ impl<'p> Search<'p> {
             for (i, state) in open.iter().enumerate() {
                 // Borrowed, not copied: a history is 104 bytes, and the copy
                 // was a call to `memcpy` for every state expanded.
-                let auto = autos.get(i).unwrap_or(&NO_HISTORY);
+                let auto = autos.get(i).unwrap_or(&Autocorrelation::EMPTY);
                 let a = state.piece as usize;
                 let floor = if self.variety() { problem.options.variety * auto.value() } else { 0.0 };
                 // The incumbent may have dropped since the state was kept.
@@ -401,9 +401,6 @@ impl<'p> Search<'p> {
         Found { total, pieces, offsets }
     }
 }
-
-/// The history of the states of a search without the variety term.
-const NO_HISTORY: Autocorrelation = Autocorrelation::EMPTY;
 
 /// Slack on the accepted lengths, relative to the target length.
 const LENGTH_SLACK: f64 = 1e-9;
