@@ -483,6 +483,11 @@ pub(super) fn search_with(
     if options.curve == CurveKind::Closed {
         order.sort_by_key(|&p| set.pieces[p].left.len());
     }
+    // Largest first, where the best pattern is wanted, so that the search
+    // that decides how long the loop takes starts at once; smallest first
+    // where any pattern will do, since every search stops once one has
+    // found one, and the small ones finish first (`search/schedule.rs`).
+    let schedule: Vec<usize> = if goal == Goal::Any { order.iter().rev().copied().collect() } else { order.clone() };
     let mut rank = vec![0; n];
     for (r, &p) in order.iter().enumerate() {
         rank[p] = r as u32;
@@ -531,7 +536,7 @@ pub(super) fn search_with(
                 problem.search(&starts, 0, window)?
             }
             CurveKind::Closed => {
-                let results = in_order_of_size(&order, |s| problem.search(&[s], problem.rank[s], window));
+                let results = in_order_of_size(&schedule, |s| problem.search(&[s], problem.rank[s], window));
                 let mut best: Option<Found> = None;
                 for r in results {
                     if let Some(f) = r?
