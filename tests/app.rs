@@ -1,7 +1,7 @@
 //! The desktop app, driven like a person would: with egui_kittest.
 
 use egui::accesskit::Role;
-use egui::{Key, Modifiers, Pos2};
+use egui::{Key, Modifiers, PointerButton, Pos2};
 use egui_kittest::kittest::Queryable;
 use tracery::dialogs::FileKind;
 use tracery::worker::JobState;
@@ -33,6 +33,61 @@ fn a_drag_on_the_canvas_yields_a_pattern() {
     assert!(!output.fill_mm.is_empty());
     // The status bar tells what was found.
     harness.get_by_label_contains("1 component(s)");
+}
+
+#[test]
+fn a_stroke_keeps_every_move_when_frames_are_slow() {
+    // A busy frame delivers many pointer moves at once, the first of them
+    // before egui has recognised a drag: every one of them is the person's
+    // stroke. Here the loop's first quarter arrives with the press, and the
+    // rest eight moves a frame, the last eight with the release.
+    let mut harness = harness(vec![]);
+    harness.step();
+    let center = Pos2::new(760.0, 400.0);
+    let radius = 110.0;
+    let points = circle(center, radius);
+    harness.hover_at(points[0]);
+    harness.step();
+    // The harness runs a frame per queued event, so the moves go straight
+    // into the next frame's input, as a busy frame would get them.
+    let press_event = egui::Event::PointerButton {
+        pos: points[0],
+        button: PointerButton::Primary,
+        pressed: true,
+        modifiers: Modifiers::NONE,
+    };
+    harness.input_mut().events.push(press_event);
+    harness.input_mut().events.extend(points[1..=16].iter().map(|&p| egui::Event::PointerMoved(p)));
+    harness.step();
+    for frame in points[17..57].chunks(8) {
+        harness.input_mut().events.extend(frame.iter().map(|&p| egui::Event::PointerMoved(p)));
+        harness.step();
+    }
+    // The last eighth comes in the frame the button is released in.
+    harness.input_mut().events.extend(points[57..].iter().map(|&p| egui::Event::PointerMoved(p)));
+    let release = egui::Event::PointerButton {
+        pos: *points.last().unwrap(),
+        button: PointerButton::Primary,
+        pressed: false,
+        modifiers: Modifiers::NONE,
+    };
+    harness.input_mut().events.push(release);
+    harness.step();
+    settle(&mut harness);
+    let app = harness.state();
+    assert_eq!(app.doc.curves.len(), 1);
+    let curve = &app.doc.curves[0];
+    assert!(curve.closed, "the stroke ends where it began, so it closes");
+    // Every control point lies on the drawn circle: none cuts a chord
+    // across moves that were dropped. Control points are evenly spaced, so
+    // their mean is the circle's centre.
+    let count = curve.points.len() as f64;
+    let points: Vec<tracery_core::DVec2> = curve.points.iter().map(|&p| p.into()).collect();
+    let centre = points.iter().fold(tracery_core::DVec2::ZERO, |sum, &p| sum + p) / count;
+    let radii: Vec<f64> = points.iter().map(|p| p.distance(centre)).collect();
+    let mean = radii.iter().sum::<f64>() / count;
+    let worst = radii.iter().map(|r| (r - mean).abs() / mean).fold(0.0, f64::max);
+    assert!(worst < 0.03, "a control point lies {:.1}% of the radius off the drawn circle", worst * 100.0);
 }
 
 #[test]

@@ -77,6 +77,9 @@ pub struct TraceryApp {
     /// What the stroke being drawn shares between its jobs.
     pub(crate) live_session: Session,
     pub(crate) gesture: Option<Gesture>,
+    /// Where the pointer went, on screen, since the primary button went down
+    /// on the canvas and before egui saw a drag: the start of a stroke.
+    pub(crate) press_trail: Vec<egui::Pos2>,
     pub(crate) dialogs: Box<dyn Dialogs>,
     pub(crate) autosave: Autosave,
     /// The document as it was when the current gesture began (one undo step per gesture).
@@ -125,6 +128,7 @@ impl TraceryApp {
             canvas_rect: None,
             live_session: Session::default(),
             gesture: None,
+            press_trail: Vec::new(),
             dialogs,
             autosave: Autosave { path: autosave_path, saved: Document::default(), last: Instant::now() },
             gesture_base: None,

@@ -118,23 +118,31 @@ fn handle_gestures(app: &mut TraceryApp, ui: &egui::Ui, response: &egui::Respons
     let view = app.state.view;
     let world = |p: egui::Pos2| view.from_screen(rect, p);
     let pointer = response.interact_pointer_pos();
+    let moves = ui.input(moves_this_frame);
     if response.drag_started_by(PointerButton::Middle) || response.drag_started_by(PointerButton::Secondary) {
         app.gesture = Some(Gesture::Pan(pan::Pan));
     } else if response.drag_started_by(PointerButton::Primary)
         // Start where the button went down, not where the drag was recognised.
         && let Some(p) = ui.input(|i| i.pointer.press_origin()).or(pointer).map(world)
     {
+        // The moves made before egui saw a drag are the stroke's start.
+        let trail = std::mem::take(&mut app.press_trail);
+        let stroke_from = |p| {
+            let mut stroke = draw::Stroke::begin(p);
+            trail.iter().for_each(|&q| stroke.extend(world(q)));
+            stroke
+        };
         let tolerance_mm = PICK_RADIUS_POINTS / f64::from(view.points_per_mm);
         app.gesture = match app.state.tool {
             Tool::Draw => {
                 app.begin_live_stroke();
-                Some(Gesture::Stroke(draw::Stroke::begin(p)))
+                Some(Gesture::Stroke(stroke_from(p)))
             }
             Tool::Pan => Some(Gesture::Pan(pan::Pan)),
             // The ring tool acts on clicks only.
             Tool::Ring => None,
-            Tool::Avoid => Some(Gesture::Avoid(draw::Stroke::begin(p))),
-            Tool::Pen => Some(Gesture::Pen(draw::Stroke::begin(p))),
+            Tool::Avoid => Some(Gesture::Avoid(stroke_from(p))),
+            Tool::Pen => Some(Gesture::Pen(stroke_from(p))),
             Tool::Clone => Some(Gesture::Clone(p, p)),
             Tool::Edit => {
                 let found =
@@ -155,7 +163,8 @@ fn handle_gestures(app: &mut TraceryApp, ui: &egui::Ui, response: &egui::Respons
                 }
             }
             Some(Gesture::Stroke(stroke) | Gesture::Avoid(stroke) | Gesture::Pen(stroke)) => {
-                if let Some(p) = pointer.map(world) {
+                // Every move of a busy frame, not only where the pointer ended.
+                for p in moves.iter().copied().chain(pointer).map(world) {
                     stroke.extend(p);
                 }
             }
@@ -167,7 +176,16 @@ fn handle_gestures(app: &mut TraceryApp, ui: &egui::Ui, response: &egui::Respons
             None => {}
         }
     }
+    if app.gesture.is_some() || !response.is_pointer_button_down_on() {
+        app.press_trail.clear();
+    } else {
+        app.press_trail.extend_from_slice(&moves);
+    }
     if response.drag_stopped() {
+        // The moves of the frame the button came up in are the stroke's end.
+        if let Some(Gesture::Stroke(stroke) | Gesture::Avoid(stroke) | Gesture::Pen(stroke)) = &mut app.gesture {
+            moves.iter().for_each(|&p| stroke.extend(world(p)));
+        }
         match app.gesture.take() {
             Some(Gesture::Stroke(stroke)) => {
                 if let Some((points, closed)) = stroke.finish(view.points_per_mm) {
@@ -195,6 +213,24 @@ fn handle_gestures(app: &mut TraceryApp, ui: &egui::Ui, response: &egui::Respons
         }
         app.gesture = None;
     }
+}
+
+/// Each place the pointer moved to this frame, in order. A busy frame
+/// gets several moves and `interact_pointer_pos` tells only the last, so a
+/// stroke drawn from it alone cuts chords across the rest. Where the
+/// primary button went down this frame, only the moves after that; where it
+/// came up, only the moves before.
+fn moves_this_frame(input: &egui::InputState) -> Vec<egui::Pos2> {
+    let mut moves = Vec::new();
+    for event in &input.events {
+        match event {
+            egui::Event::PointerButton { button: PointerButton::Primary, pressed: true, .. } => moves.clear(),
+            egui::Event::PointerButton { button: PointerButton::Primary, pressed: false, .. } => break,
+            egui::Event::PointerMoved(p) => moves.push(*p),
+            _ => {}
+        }
+    }
+    moves
 }
 
 fn paint_document(app: &mut TraceryApp, ui: &egui::Ui, painter: &egui::Painter, rect: egui::Rect) {
