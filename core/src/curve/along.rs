@@ -120,7 +120,8 @@ impl Along {
     /// (the file's own size where it gives one in mm, cm, in, pt or pc; one
     /// user unit a millimetre otherwise), resampled every
     /// [`SVG_SPACING_MM`] so that a path of a few long segments gets
-    /// tangents along them, not only at its corners.
+    /// tangents along them, not only at its corners, and with its corners
+    /// kept where they are drawn.
     pub fn curve_from_svg(path: &Path) -> Result<Curve, AlongError> {
         let data =
             std::fs::read(path).map_err(|e| AlongError::Io { path: path.to_path_buf(), message: e.to_string() })?;
@@ -130,7 +131,7 @@ impl Along {
         let closed = points.len() > 2
             && points.first().zip(points.last()).is_some_and(|(a, b)| a.distance(*b) < SVG_CLOSE_TOLERANCE);
         let curve = Curve::from_polyline(&points, closed).map_err(|source| AlongError::Curve { context, source })?;
-        Ok(curve.resampled(SVG_SPACING_MM))
+        Ok(curve.resampled_keeping_corners(SVG_SPACING_MM))
     }
 
     /// The length the pattern runs along, mm (a rectangle's width).

@@ -5,12 +5,14 @@
 
 mod along;
 mod band_to_plane;
+mod corners;
 mod parametric;
 mod planar_topology;
 mod svg_path;
 
 pub use along::{Along, AlongError, SVG_SPACING_MM};
 pub use band_to_plane::{MAPPING_TOLERANCE_MM, PlanarPattern, map_along, map_along_within};
-pub use parametric::{CORNER_ANGLE_DEG, Curve, CurveCursor, CurveError};
+pub use corners::CORNER_ANGLE_DEG;
+pub use parametric::{Curve, CurveCursor, CurveError};
 pub use planar_topology::{planar_topology, planar_topology_of_clean};
 pub use svg_path::{SvgShape, first_path_points, svg_shapes};

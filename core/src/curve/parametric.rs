@@ -53,10 +53,6 @@ impl CurveCursor<'_> {
     }
 }
 
-/// A vertex that turns by more than this is a corner that
-/// [`Curve::with_rounded_corners`] rounds, degrees.
-pub const CORNER_ANGLE_DEG: f64 = 5.0;
-
 /// Why a curve could not be built.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
 #[non_exhaustive]
@@ -252,69 +248,6 @@ impl Curve {
                 })
                 .collect(),
         )
-    }
-
-    /// The curve with every sharp corner replaced by a circular arc of
-    /// `radius` (smaller where the segments beside the corner are too short),
-    /// so that a band of half-height below `radius` turns the corner without
-    /// folding. Vertices that turn less than [`CORNER_ANGLE_DEG`] are left as
-    /// they are: finely sampled smooth curves come back unchanged.
-    ///
-    /// ```
-    /// use tracery_core::curve::Curve;
-    /// let square = Curve::regular_polygon(4, 50.0).unwrap();
-    /// let rounded = square.with_rounded_corners(5.0);
-    /// // Each corner loses 2r and gains a quarter circle: 4·(π/2 − 2)·r in all.
-    /// let expected = square.length() + 4.0 * (std::f64::consts::FRAC_PI_2 - 2.0) * 5.0;
-    /// assert!((rounded.length() - expected).abs() < 0.05);
-    /// let circle = Curve::circle(30.0).unwrap();
-    /// assert_eq!(circle.with_rounded_corners(5.0), circle);
-    /// ```
-    pub fn with_rounded_corners(&self, radius: f64) -> Curve {
-        let closed = self.closed;
-        let mut pts: Vec<DVec2> = self.points.clone();
-        if closed {
-            pts.pop();
-        }
-        let n = pts.len();
-        if n < 3 || radius.is_nan() || radius <= 0.0 {
-            return self.clone();
-        }
-        let threshold = CORNER_ANGLE_DEG.to_radians();
-        let mut out: Vec<DVec2> = Vec::with_capacity(n);
-        let mut changed = false;
-        for i in 0..n {
-            let interior = closed || (i > 0 && i + 1 < n);
-            if !interior {
-                out.push(pts[i]);
-                continue;
-            }
-            let (prev, here, next) = (pts[(i + n - 1) % n], pts[i], pts[(i + 1) % n]);
-            let (d_in, d_out) = (here - prev, next - here);
-            let turn = d_in.perp_dot(d_out).atan2(d_in.dot(d_out));
-            if turn.abs() < threshold {
-                out.push(here);
-                continue;
-            }
-            // The arc starts and ends `reach` before and after the corner,
-            // at most half of each segment so that neighbouring arcs never overlap.
-            let half_turn = 0.5 * turn.abs();
-            let reach = (radius * half_turn.tan()).min(0.5 * d_in.length()).min(0.5 * d_out.length());
-            let r = reach / half_turn.tan();
-            let t_in = d_in.normalize();
-            let start = here - t_in * reach;
-            let centre = start + t_in.perp() * r * turn.signum();
-            let steps = ((turn.abs().to_degrees() / 3.0).ceil() as usize).max(2);
-            for k in 0..=steps {
-                let a = turn * k as f64 / steps as f64;
-                out.push(centre + DVec2::from_angle(a).rotate(start - centre));
-            }
-            changed = true;
-        }
-        if !changed {
-            return self.clone();
-        }
-        Curve::from_polyline(&out, closed).unwrap_or_else(|_| self.clone())
     }
 
     /// The same curve with points every `spacing` units of arc length.

@@ -1,0 +1,284 @@
+//! Sharp corners of a curve: kept where a path is resampled, and replaced
+//! by circular arcs so that a band turns them instead of folding over
+//! itself.
+//!
+//! A corner is a vertex that turns by [`CORNER_ANGLE_DEG`] or more, or a run
+//! of such vertices turning the same way on a tighter radius than the arc
+//! wanted (a small arc of the path, flattened). Each arc reaches as far along
+//! the straight runs beside the corner as half of each run, not only half of
+//! the next segment: on a path sampled every half millimetre that was a
+//! quarter of a millimetre, so a square frame drawn in SVG kept its corners
+//! sharp where the same frame given as `square:` had them rounded.
+
+use glam::DVec2;
+
+use super::Curve;
+
+/// A vertex that turns by more than this is a corner that
+/// [`Curve::with_rounded_corners`] rounds, degrees.
+pub const CORNER_ANGLE_DEG: f64 = 5.0;
+
+/// How far a point may lie off the line of a straight run and still belong
+/// to it, as a share of the rounding radius: a resampled straight segment
+/// lies on its line to rounding; a drawn stroke does not, and its run ends
+/// at the next point, as before.
+const STRAIGHT_TOLERANCE: f64 = 1e-3;
+
+/// A corner turning more than this (a hairpin) is left as it is: the lines
+/// beside it are nearly parallel, so where they meet is ill-defined, degrees.
+const MAX_CORNER_TURN_DEG: f64 = 175.0;
+
+/// Degrees of arc between the points that draw a rounded corner.
+const ARC_STEP_DEG: f64 = 3.0;
+
+impl Curve {
+    /// The curve with points about every `spacing` units of arc length, its
+    /// corners (vertices turning [`CORNER_ANGLE_DEG`] or more) kept where
+    /// they are: each stretch between two corners is sampled evenly on its
+    /// own. Sampled straight through, a corner is cut by a short chord, and
+    /// the straight sides beside it no longer meet where they were drawn.
+    ///
+    /// ```
+    /// use tracery_core::curve::Curve;
+    /// let square = Curve::regular_polygon(4, 50.0).unwrap();
+    /// let sampled = square.resampled_keeping_corners(0.7);
+    /// for corner in square.points() {
+    ///     assert!(sampled.points().iter().any(|p| p.distance(*corner) < 1e-9));
+    /// }
+    /// assert!((sampled.length() - square.length()).abs() < 1e-9);
+    /// ```
+    pub fn resampled_keeping_corners(&self, spacing: f64) -> Curve {
+        let closed = self.is_closed();
+        let mut points = self.points().to_vec();
+        if closed {
+            points.pop();
+        }
+        let n = points.len();
+        let threshold = CORNER_ANGLE_DEG.to_radians();
+        let corners: Vec<usize> =
+            (0..n).filter(|&i| (closed || (i > 0 && i + 1 < n)) && turn_at(&points, i).abs() >= threshold).collect();
+        if n < 3 || corners.is_empty() || spacing.is_nan() || spacing <= 0.0 {
+            return self.resampled(spacing);
+        }
+        // Stretches from corner to corner (and from the ends, when open).
+        let mut stops: Vec<usize> = corners.clone();
+        if closed {
+            stops.push(corners[0] + n);
+        } else {
+            stops.insert(0, 0);
+            stops.push(n - 1);
+        }
+        let mut out: Vec<DVec2> = Vec::new();
+        for pair in stops.windows(2) {
+            let stretch: Vec<DVec2> = (pair[0]..=pair[1]).map(|i| points[i % n]).collect();
+            let Ok(piece) = Curve::from_polyline(&stretch, false) else { continue };
+            let count = ((piece.length() / spacing).ceil() as usize).max(1);
+            // Each stretch's last point is the next one's first.
+            out.extend((0..count).map(|k| piece.point(piece.length() * k as f64 / count as f64)));
+        }
+        if !closed {
+            out.push(points[n - 1]);
+        }
+        Curve::from_polyline(&out, closed).unwrap_or_else(|_| self.resampled(spacing))
+    }
+
+    /// The curve with every sharp corner replaced by a circular arc of
+    /// `radius` (smaller where the straight runs beside the corner are too
+    /// short), so that a band of half-height below `radius` turns the corner
+    /// without folding. Vertices that turn less than [`CORNER_ANGLE_DEG`] are
+    /// left as they are: finely sampled smooth curves come back unchanged.
+    ///
+    /// ```
+    /// use tracery_core::curve::Curve;
+    /// let square = Curve::regular_polygon(4, 50.0).unwrap();
+    /// let rounded = square.with_rounded_corners(5.0);
+    /// // Each corner loses 2r and gains a quarter circle: 4·(π/2 − 2)·r in all.
+    /// let expected = square.length() + 4.0 * (std::f64::consts::FRAC_PI_2 - 2.0) * 5.0;
+    /// assert!((rounded.length() - expected).abs() < 0.05);
+    /// // The same square sampled every half millimetre is rounded the same.
+    /// let sampled = square.resampled(0.5).with_rounded_corners(5.0);
+    /// assert!((sampled.length() - expected).abs() < 0.05);
+    /// let circle = Curve::circle(30.0).unwrap();
+    /// assert_eq!(circle.with_rounded_corners(5.0), circle);
+    /// ```
+    pub fn with_rounded_corners(&self, radius: f64) -> Curve {
+        let closed = self.is_closed();
+        let mut points = self.points().to_vec();
+        if closed {
+            points.pop();
+        }
+        if points.len() < 3 || radius.is_nan() || radius <= 0.0 {
+            return self.clone();
+        }
+        match rounded(&points, closed, radius) {
+            Some(out) => Curve::from_polyline(&out, closed).unwrap_or_else(|_| self.clone()),
+            None => self.clone(),
+        }
+    }
+}
+
+/// A corner found on the polyline: the vertices it drops, inclusive and in
+/// order (wrapping on a closed curve), and the arc that replaces them.
+struct Corner {
+    first: usize,
+    last: usize,
+    arc: Vec<DVec2>,
+}
+
+/// The polyline with its corners rounded, or `None` where it has none.
+fn rounded(points: &[DVec2], closed: bool, radius: f64) -> Option<Vec<DVec2>> {
+    let n = points.len();
+    let threshold = CORNER_ANGLE_DEG.to_radians();
+    let at = |i: isize| points[i.rem_euclid(n as isize) as usize];
+    let interior = |i: isize| closed || (i > 0 && i + 1 < n as isize);
+    // The signed turn at each vertex (zero at an open curve's ends).
+    let turns: Vec<f64> = (0..n).map(|i| if interior(i as isize) { turn_at(points, i) } else { 0.0 }).collect();
+    let turn = |i: isize| turns[i.rem_euclid(n as isize) as usize];
+    let is_corner = |i: isize| turn(i).abs() >= threshold;
+    if !(0..n as isize).any(is_corner) {
+        return None;
+    }
+    // Two neighbouring corners are one where they turn the same way on an
+    // arc tighter than `radius`: the segment between them is shorter than
+    // the radius times the angle they turn by on average.
+    let joined = |i: isize| {
+        is_corner(i)
+            && is_corner(i + 1)
+            && (closed || i + 1 < n as isize)
+            && turn(i).signum() == turn(i + 1).signum()
+            && at(i).distance(at(i + 1)) < radius * 0.5 * (turn(i).abs() + turn(i + 1).abs())
+    };
+    // On a loop, start where no run is cut in two; a loop that is one run
+    // all the way round is a small closed curve, left as it is.
+    let start = if closed { (0..n as isize).find(|&i| !joined(i - 1))? } else { 0 };
+    let mut runs: Vec<(isize, isize)> = Vec::new();
+    let mut i = start;
+    while i < start + n as isize {
+        if !is_corner(i) {
+            i += 1;
+            continue;
+        }
+        let mut last = i;
+        while last + 1 < start + n as isize && joined(last) {
+            last += 1;
+        }
+        runs.push((i, last));
+        i = last + 1;
+    }
+    let tolerance = STRAIGHT_TOLERANCE * radius;
+    let mut corners: Vec<Corner> = Vec::new();
+    for (k, &(a, b)) in runs.iter().enumerate() {
+        let total: f64 = (a..=b).map(turn).sum();
+        if total.abs() >= MAX_CORNER_TURN_DEG.to_radians() {
+            continue;
+        }
+        let t_in = (at(a) - at(a - 1)).normalize_or_zero();
+        let t_out = (at(b + 1) - at(b)).normalize_or_zero();
+        let cross = t_in.perp_dot(t_out);
+        if t_in == DVec2::ZERO || t_out == DVec2::ZERO || cross.abs() < 1e-12 {
+            continue;
+        }
+        // Where the lines of the segments into and out of the run meet.
+        let apex = if a == b { at(a) } else { at(a - 1) + t_in * (at(b + 1) - at(a - 1)).perp_dot(t_out) / cross };
+        // The straight runs beside the corner, up to the previous and the
+        // next corner (whose arcs take the other half) or an open end.
+        let previous_end = match k {
+            0 if closed => runs[runs.len() - 1].1 - n as isize,
+            0 => 0,
+            _ => runs[k - 1].1,
+        };
+        let next_start = match runs.get(k + 1) {
+            Some(next) => next.0,
+            None if closed => runs[0].0 + n as isize,
+            None => n as isize - 1,
+        };
+        let back = straight_run(&at, apex, -t_in, a - 1, -1, previous_end.max(b + 1 - n as isize), tolerance);
+        let ahead = straight_run(&at, apex, t_out, b + 1, 1, next_start.min(a - 1 + n as isize), tolerance);
+        let half_turn = 0.5 * total.abs();
+        let reach = (radius * half_turn.tan()).min(0.5 * back.0).min(0.5 * ahead.0);
+        if reach <= 0.0 {
+            continue;
+        }
+        // Drop every vertex of the run, and those beside it nearer the apex
+        // than the arc's ends.
+        let mut first = a;
+        while first > back.1 && at(first - 1).distance(apex) < reach {
+            first -= 1;
+        }
+        let mut last = b;
+        while last < ahead.1 && at(last + 1).distance(apex) < reach {
+            last += 1;
+        }
+        let r = reach / half_turn.tan();
+        let arc_start = apex - t_in * reach;
+        let centre = arc_start + t_in.perp() * r * total.signum();
+        let steps = ((total.abs().to_degrees() / ARC_STEP_DEG).ceil() as usize).max(2);
+        let arc = (0..=steps)
+            .map(|s| centre + DVec2::from_angle(total * s as f64 / steps as f64).rotate(arc_start - centre))
+            .collect();
+        let wrap = |i: isize| i.rem_euclid(n as isize) as usize;
+        corners.push(Corner { first: wrap(first), last: wrap(last), arc });
+    }
+    if corners.is_empty() {
+        return None;
+    }
+    // Each vertex's corner, where one drops it; each corner is drawn where
+    // its first dropped vertex was.
+    let mut dropped_by: Vec<Option<usize>> = vec![None; n];
+    for (c, corner) in corners.iter().enumerate() {
+        let mut i = corner.first;
+        loop {
+            dropped_by[i] = Some(c);
+            if i == corner.last {
+                break;
+            }
+            i = (i + 1) % n;
+        }
+    }
+    let mut out = Vec::with_capacity(n + corners.iter().map(|c| c.arc.len()).sum::<usize>());
+    for (i, &point) in points.iter().enumerate() {
+        match dropped_by[i] {
+            None => out.push(point),
+            Some(c) if corners[c].first == i => out.extend_from_slice(&corners[c].arc),
+            Some(_) => {}
+        }
+    }
+    Some(out)
+}
+
+/// The signed turn at vertex `i` of a polygon (wrapping), radians.
+fn turn_at(points: &[DVec2], i: usize) -> f64 {
+    let n = points.len();
+    let (prev, here, next) = (points[(i + n - 1) % n], points[i], points[(i + 1) % n]);
+    let (d_in, d_out) = (here - prev, next - here);
+    d_in.perp_dot(d_out).atan2(d_in.dot(d_out))
+}
+
+/// How far a straight run goes from `apex` in `direction`, walking the
+/// vertices from `from` by `step` up to `limit` (inclusive) while they stay
+/// on the line and move along it, and the last vertex on it: the length the
+/// arc may take half of.
+fn straight_run(
+    at: &impl Fn(isize) -> DVec2,
+    apex: DVec2,
+    direction: DVec2,
+    from: isize,
+    step: isize,
+    limit: isize,
+    tolerance: f64,
+) -> (f64, isize) {
+    let mut length = 0.0;
+    let mut last = from - step;
+    let mut j = from;
+    while (step > 0 && j <= limit) || (step < 0 && j >= limit) {
+        let offset = at(j) - apex;
+        let along = offset.dot(direction);
+        if offset.perp_dot(direction).abs() > tolerance || along <= length {
+            break;
+        }
+        length = along;
+        last = j;
+        j += step;
+    }
+    (length, last)
+}
