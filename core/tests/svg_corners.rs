@@ -1,10 +1,11 @@
 //! Corners of curves read from SVG files: a square picture frame, an L, a
-//! star and a rectangle with small rounded corners, drawn as paths in a file
-//! sized in millimetres, as a person exports them
-//! from an illustration tool. Such a path is sampled every half millimetre,
-//! and its corners must be rounded as those of the built-in frames are: the
-//! band turns them without being narrowed, and every built-in exemplar
-//! comes out as planned, counted on the final geometry.
+//! star, a rectangle with small rounded corners and a heart, drawn as paths
+//! in a file sized in millimetres, as a person exports them from an
+//! illustration tool (and the built-in heart). Such a path is sampled every
+//! half millimetre, and its corners must be rounded as those of the
+//! built-in frames are: the band turns them without being narrowed, and
+//! every built-in exemplar comes out as planned, counted on the final
+//! geometry.
 
 use tracery_core::control::Control;
 use tracery_core::curve::{Along, Curve, planar_topology};
@@ -45,7 +46,7 @@ fn tightest_radius_mm(curve: &Curve, step_mm: f64) -> f64 {
 }
 
 #[test]
-fn a_frame_and_an_l_drawn_in_svg_turn_their_corners_as_planned() {
+fn frames_stars_and_hearts_drawn_in_svg_turn_their_corners_as_planned() {
     let frame = curve_from(&file("M10 10 H90 V90 H10 Z"), "frame");
     let ell = curve_from(&file("M10 10 L10 90 L90 90"), "ell");
     // A five-pointed star, its tips turning 136° and its inner corners 64°.
@@ -62,10 +63,25 @@ fn a_frame_and_an_l_drawn_in_svg_turn_their_corners_as_planned() {
         &file("M20,10 H80 A2,2 0 0 1 82,12 V88 A2,2 0 0 1 80,90 H20 A2,2 0 0 1 18,88 V12 A2,2 0 0 1 20,10 Z"),
         "rounded",
     );
-    assert!(frame.is_closed() && !ell.is_closed() && star.is_closed() && rounded.is_closed());
+    // A heart of two Bézier lobes: its point and its cusp lie between
+    // curved stretches, with no straight run beside them.
+    let heart = curve_from(
+        &file("M50,95 C15,70 2,48 15,28 C28,10 46,18 50,32 C54,18 72,10 85,28 C98,48 85,70 50,95 Z"),
+        "heart",
+    );
+    assert!(frame.is_closed() && !ell.is_closed() && star.is_closed() && rounded.is_closed() && heart.is_closed());
     // The drawn corners are kept where they are, not cut by the sampling.
     assert!((frame.length() - 320.0).abs() < 1e-3, "{}", frame.length());
-    for (name, curve) in [("frame", &frame), ("L", &ell), ("star", &star), ("rounded rectangle", &rounded)] {
+    let built_in_heart = Curve::heart(90.0).unwrap();
+    let shapes = [
+        ("frame", &frame),
+        ("L", &ell),
+        ("star", &star),
+        ("rounded rectangle", &rounded),
+        ("heart", &heart),
+        ("built-in heart", &built_in_heart),
+    ];
+    for (name, curve) in shapes {
         for exemplar_name in BUILTIN_NAMES {
             let exemplar = builtin(exemplar_name).unwrap();
             let settings = Settings::default();

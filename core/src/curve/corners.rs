@@ -165,23 +165,10 @@ fn rounded(points: &[DVec2], closed: bool, radius: f64) -> Option<Vec<DVec2>> {
         runs.push((i, last));
         i = last + 1;
     }
-    let tolerance = STRAIGHT_TOLERANCE * radius;
     let mut corners: Vec<Corner> = Vec::new();
     for (k, &(a, b)) in runs.iter().enumerate() {
-        let total: f64 = (a..=b).map(turn).sum();
-        if total.abs() >= MAX_CORNER_TURN_DEG.to_radians() {
-            continue;
-        }
-        let t_in = (at(a) - at(a - 1)).normalize_or_zero();
-        let t_out = (at(b + 1) - at(b)).normalize_or_zero();
-        let cross = t_in.perp_dot(t_out);
-        if t_in == DVec2::ZERO || t_out == DVec2::ZERO || cross.abs() < 1e-12 {
-            continue;
-        }
-        // Where the lines of the segments into and out of the run meet.
-        let apex = if a == b { at(a) } else { at(a - 1) + t_in * (at(b + 1) - at(a - 1)).perp_dot(t_out) / cross };
-        // The straight runs beside the corner, up to the previous and the
-        // next corner (whose arcs take the other half) or an open end.
+        // The previous and the next corner (whose arcs take the other half
+        // of what lies between) or an open end.
         let previous_end = match k {
             0 if closed => runs[runs.len() - 1].1 - n as isize,
             0 => 0,
@@ -192,47 +179,34 @@ fn rounded(points: &[DVec2], closed: bool, radius: f64) -> Option<Vec<DVec2>> {
             None if closed => runs[0].0 + n as isize,
             None => n as isize - 1,
         };
-        let back = straight_run(&at, apex, -t_in, a - 1, -1, previous_end.max(b + 1 - n as isize), tolerance);
-        let ahead = straight_run(&at, apex, t_out, b + 1, 1, next_start.min(a - 1 + n as isize), tolerance);
-        let half_turn = 0.5 * total.abs();
-        let reach = (radius * half_turn.tan()).min(0.5 * back.0).min(0.5 * ahead.0);
-        if reach <= 0.0 {
-            continue;
-        }
-        // Drop every vertex of the run, and those beside it nearer the apex
-        // than the arc's ends.
-        let mut first = a;
-        while first > back.1 && at(first - 1).distance(apex) < reach {
-            first -= 1;
-        }
-        let mut last = b;
-        while last < ahead.1 && at(last + 1).distance(apex) < reach {
-            last += 1;
-        }
-        let r = reach / half_turn.tan();
-        let arc_start = apex - t_in * reach;
-        let centre = arc_start + t_in.perp() * r * total.signum();
-        let steps = ((total.abs().to_degrees() / ARC_STEP_DEG).ceil() as usize).max(2);
-        let arc = (0..=steps)
-            .map(|s| centre + DVec2::from_angle(total * s as f64 / steps as f64).rotate(arc_start - centre))
-            .collect();
-        let wrap = |i: isize| i.rem_euclid(n as isize) as usize;
-        corners.push(Corner { first: wrap(first), last: wrap(last), arc });
+        let total: f64 = (a..=b).map(turn).sum();
+        let arc = if total.abs() < MAX_CORNER_TURN_DEG.to_radians() {
+            arc_corner(&at, (a, b), total, (previous_end, next_start), n, radius)
+        } else {
+            None
+        };
+        // Where the arc falls short of the radius (the stretches beside the
+        // corner are curved, or it is a cusp), a blend into the curve on
+        // either side, if one turns wide enough.
+        let corner = match arc {
+            Some((corner, r)) if r >= radius * (1.0 - 1e-9) => Some(corner),
+            arc => blended_corner(&at, (a, b), (previous_end, next_start), closed, n, radius).or(arc.map(|(c, _)| c)),
+        };
+        corners.extend(corner);
     }
     if corners.is_empty() {
         return None;
     }
     // Each vertex's corner, where one drops it; each corner is drawn where
-    // its first dropped vertex was.
+    // its first dropped vertex was. A corner reaching into vertices another
+    // already drops is left out (each keeps to half the way to the next,
+    // so only rounding could make two meet).
     let mut dropped_by: Vec<Option<usize>> = vec![None; n];
     for (c, corner) in corners.iter().enumerate() {
-        let mut i = corner.first;
-        loop {
-            dropped_by[i] = Some(c);
-            if i == corner.last {
-                break;
-            }
-            i = (i + 1) % n;
+        let span = (corner.last + n - corner.first) % n + 1;
+        let vertices = || (0..span).map(|k| (corner.first + k) % n);
+        if vertices().all(|i| dropped_by[i].is_none()) {
+            vertices().for_each(|i| dropped_by[i] = Some(c));
         }
     }
     let mut out = Vec::with_capacity(n + corners.iter().map(|c| c.arc.len()).sum::<usize>());
@@ -244,6 +218,120 @@ fn rounded(points: &[DVec2], closed: bool, radius: f64) -> Option<Vec<DVec2>> {
         }
     }
     Some(out)
+}
+
+/// The arc of `radius` tangent to the lines into and out of the run
+/// `a..=b`, turning by `total`, reaching along the straight runs beside it
+/// as far as half of each (so less than `radius` where they are short), and
+/// the radius it has.
+fn arc_corner(
+    at: &impl Fn(isize) -> DVec2,
+    (a, b): (isize, isize),
+    total: f64,
+    (previous_end, next_start): (isize, isize),
+    n: usize,
+    radius: f64,
+) -> Option<(Corner, f64)> {
+    let tolerance = STRAIGHT_TOLERANCE * radius;
+    let t_in = (at(a) - at(a - 1)).normalize_or_zero();
+    let t_out = (at(b + 1) - at(b)).normalize_or_zero();
+    let cross = t_in.perp_dot(t_out);
+    if t_in == DVec2::ZERO || t_out == DVec2::ZERO || cross.abs() < 1e-12 {
+        return None;
+    }
+    // Where the lines of the segments into and out of the run meet.
+    let apex = if a == b { at(a) } else { at(a - 1) + t_in * (at(b + 1) - at(a - 1)).perp_dot(t_out) / cross };
+    let back = straight_run(&at, apex, -t_in, a - 1, -1, previous_end.max(b + 1 - n as isize), tolerance);
+    let ahead = straight_run(&at, apex, t_out, b + 1, 1, next_start.min(a - 1 + n as isize), tolerance);
+    let half_turn = 0.5 * total.abs();
+    let reach = (radius * half_turn.tan()).min(0.5 * back.0).min(0.5 * ahead.0);
+    if reach <= 0.0 {
+        return None;
+    }
+    // Drop every vertex of the run, and those beside it nearer the apex
+    // than the arc's ends.
+    let mut first = a;
+    while first > back.1 && at(first - 1).distance(apex) < reach {
+        first -= 1;
+    }
+    let mut last = b;
+    while last < ahead.1 && at(last + 1).distance(apex) < reach {
+        last += 1;
+    }
+    let r = reach / half_turn.tan();
+    let arc_start = apex - t_in * reach;
+    let centre = arc_start + t_in.perp() * r * total.signum();
+    let steps = ((total.abs().to_degrees() / ARC_STEP_DEG).ceil() as usize).max(2);
+    let arc = (0..=steps)
+        .map(|s| centre + DVec2::from_angle(total * s as f64 / steps as f64).rotate(arc_start - centre))
+        .collect();
+    let wrap = |i: isize| i.rem_euclid(n as isize) as usize;
+    Some((Corner { first: wrap(first), last: wrap(last), arc }, r))
+}
+
+/// A quadratic Bézier from a vertex before the run `a..=b` to one after
+/// it, tangent to the curve at both, through the point where those
+/// tangents meet: the nearest such pair whose blend turns on no tighter
+/// radius than `radius`, within half the way to the neighbouring corners.
+/// Where the curve beside a corner is curved (the sides of a heart's
+/// point), no straight run leads to it, and an arc tangent to the segments
+/// next to the corner would be tiny.
+fn blended_corner(
+    at: &impl Fn(isize) -> DVec2,
+    (a, b): (isize, isize),
+    (previous_end, next_start): (isize, isize),
+    closed: bool,
+    n: usize,
+    radius: f64,
+) -> Option<Corner> {
+    let lowest = if closed { (previous_end + a + 1) / 2 } else { ((previous_end + a + 1) / 2).max(1) };
+    let highest = if closed { (b + next_start) / 2 } else { ((b + next_start) / 2).min(n as isize - 2) };
+    let steps = (a - lowest).min(highest - b);
+    for m in 1..=steps {
+        let (i_in, i_out) = (a - m, b + m);
+        let (p_in, p_out) = (at(i_in), at(i_out));
+        let t_in = (p_in - at(i_in - 1)).normalize_or_zero();
+        let t_out = (at(i_out + 1) - p_out).normalize_or_zero();
+        let cross = t_in.perp_dot(t_out);
+        if cross.abs() < 1e-9 {
+            continue;
+        }
+        let q = p_in + t_in * (p_out - p_in).perp_dot(t_out) / cross;
+        // The tangents must meet ahead of the blend's start and behind its end.
+        if (q - p_in).dot(t_in) <= 0.0 || (p_out - q).dot(t_out) <= 0.0 {
+            continue;
+        }
+        if quadratic_min_radius(p_in, q, p_out) < radius {
+            continue;
+        }
+        let turn = t_in.angle_to(t_out).abs().to_degrees();
+        let by_turn = (turn / ARC_STEP_DEG).ceil() as usize;
+        let by_length = ((p_out - p_in).length() / (0.25 * radius)).ceil() as usize;
+        let count = by_turn.max(by_length).max(4);
+        let blend = (1..count)
+            .map(|k| {
+                let s = k as f64 / count as f64;
+                p_in * (1.0 - s) * (1.0 - s) + q * 2.0 * s * (1.0 - s) + p_out * s * s
+            })
+            .collect();
+        let wrap = |i: isize| i.rem_euclid(n as isize) as usize;
+        return Some(Corner { first: wrap(i_in + 1), last: wrap(i_out - 1), arc: blend });
+    }
+    None
+}
+
+/// The tightest radius of curvature of the quadratic Bézier `p0, p1, p2`,
+/// sampled finely enough for the blends here.
+fn quadratic_min_radius(p0: DVec2, p1: DVec2, p2: DVec2) -> f64 {
+    let second = 2.0 * (p2 - 2.0 * p1 + p0);
+    (0..=32)
+        .map(|k| {
+            let s = k as f64 / 32.0;
+            let first = 2.0 * ((1.0 - s) * (p1 - p0) + s * (p2 - p1));
+            let cross = first.perp_dot(second).abs();
+            if cross < 1e-300 { f64::INFINITY } else { first.length().powi(3) / cross }
+        })
+        .fold(f64::INFINITY, f64::min)
 }
 
 /// The signed turn at vertex `i` of a polygon (wrapping), radians.
