@@ -1,6 +1,6 @@
 //! Sharp corners of a curve: kept where a path is resampled, and replaced
-//! by circular arcs so that a band turns them instead of folding over
-//! itself.
+//! by circular arcs (or blends into the curve) so that a band turns them
+//! instead of folding over itself.
 //!
 //! A corner is a vertex that turns by [`CORNER_ANGLE_DEG`] or more, or a run
 //! of such vertices turning the same way on a tighter radius than the arc
@@ -8,7 +8,8 @@
 //! the straight runs beside the corner as half of each run, not only half of
 //! the next segment: on a path sampled every half millimetre that was a
 //! quarter of a millimetre, so a square frame drawn in SVG kept its corners
-//! sharp where the same frame given as `square:` had them rounded.
+//! sharp where the same frame given as `square:` had them rounded. Where the
+//! curve beside a corner is not straight, the corner is blended into it.
 
 use glam::DVec2;
 
@@ -56,7 +57,7 @@ impl Curve {
         let n = points.len();
         let threshold = CORNER_ANGLE_DEG.to_radians();
         let corners: Vec<usize> =
-            (0..n).filter(|&i| (closed || (i > 0 && i + 1 < n)) && turn_at(&points, i).abs() >= threshold).collect();
+            (0..n).zip(turns(&points, closed)).filter(|(_, t)| t.abs() >= threshold).map(|(i, _)| i).collect();
         if n < 3 || corners.is_empty() || spacing.is_nan() || spacing <= 0.0 {
             return self.resampled(spacing);
         }
@@ -83,8 +84,9 @@ impl Curve {
     }
 
     /// The curve with every sharp corner replaced by a circular arc of
-    /// `radius` (smaller where the straight runs beside the corner are too
-    /// short), so that a band of half-height below `radius` turns the corner
+    /// `radius`, or by a blend into the curve where the stretches beside the
+    /// corner are not straight (an arc smaller than `radius` where neither
+    /// fits), so that a band of half-height below `radius` turns the corner
     /// without folding. Vertices that turn less than [`CORNER_ANGLE_DEG`] are
     /// left as they are: finely sampled smooth curves come back unchanged.
     ///
@@ -130,9 +132,7 @@ fn rounded(points: &[DVec2], closed: bool, radius: f64) -> Option<Vec<DVec2>> {
     let n = points.len();
     let threshold = CORNER_ANGLE_DEG.to_radians();
     let at = |i: isize| points[i.rem_euclid(n as isize) as usize];
-    let interior = |i: isize| closed || (i > 0 && i + 1 < n as isize);
-    // The signed turn at each vertex (zero at an open curve's ends).
-    let turns: Vec<f64> = (0..n).map(|i| if interior(i as isize) { turn_at(points, i) } else { 0.0 }).collect();
+    let turns = turns(points, closed);
     let turn = |i: isize| turns[i.rem_euclid(n as isize) as usize];
     let is_corner = |i: isize| turn(i).abs() >= threshold;
     if !(0..n as isize).any(is_corner) {
@@ -166,9 +166,10 @@ fn rounded(points: &[DVec2], closed: bool, radius: f64) -> Option<Vec<DVec2>> {
         i = last + 1;
     }
     // Two corners turning the same way, both within what the arc of their
-    // turns together would take (its reach either side), are one corner: a corner cut by a chord (a drawn stroke's
-    // control points seldom fall on the corner) is two half corners a few
-    // millimetres apart, each of which could only take a tiny arc.
+    // turns together would take (its reach either side), are one corner: a
+    // corner cut by a chord (a drawn stroke's control points seldom fall on
+    // the corner) is two half corners a few millimetres apart, each of
+    // which could only take a tiny arc.
     let run_turn = |(a, b): (isize, isize)| (a..=b).map(turn).sum::<f64>();
     let arc_reach = |t: f64| radius * (0.5 * t.abs()).tan();
     let overlapping = |first: (isize, isize), second: (isize, isize)| {
@@ -214,7 +215,7 @@ fn rounded(points: &[DVec2], closed: bool, radius: f64) -> Option<Vec<DVec2>> {
         // take the tangent from).
         let lowest = if !closed && first == 0 { 1 } else { (previous_end + a + 1) / 2 };
         let highest = if !closed && last + 1 == runs.len() { n as isize - 2 } else { (b + next_start) / 2 };
-        let total: f64 = (a..=b).map(turn).sum();
+        let total = run_turn((a, b));
         let arc = if total.abs() < MAX_CORNER_TURN_DEG.to_radians() {
             arc_corner(&at, (a, b), total, (previous_end, next_start), n, radius)
         } else {
@@ -296,7 +297,7 @@ fn arc_corner(
         return None;
     }
     // Where the lines of the segments into and out of the run meet.
-    let apex = if a == b { at(a) } else { at(a - 1) + t_in * (at(b + 1) - at(a - 1)).perp_dot(t_out) / cross };
+    let apex = if a == b { at(a) } else { lines_meet(at(a - 1), t_in, at(b + 1), t_out) };
     let back = straight_run(&at, apex, -t_in, a - 1, -1, previous_end.max(b + 1 - n as isize), tolerance);
     let ahead = straight_run(&at, apex, t_out, b + 1, 1, next_start.min(a - 1 + n as isize), tolerance);
     let half_turn = 0.5 * total.abs();
@@ -315,12 +316,7 @@ fn arc_corner(
         last += 1;
     }
     let r = reach / half_turn.tan();
-    let arc_start = apex - t_in * reach;
-    let centre = arc_start + t_in.perp() * r * total.signum();
-    let steps = ((total.abs().to_degrees() / ARC_STEP_DEG).ceil() as usize).max(2);
-    let arc = (0..=steps)
-        .map(|s| centre + DVec2::from_angle(total * s as f64 / steps as f64).rotate(arc_start - centre))
-        .collect();
+    let arc = arc_from(apex, t_in, total, reach, r);
     let wrap = |i: isize| i.rem_euclid(n as isize) as usize;
     Some((Corner { first: wrap(first), last: wrap(last), arc }, r))
 }
@@ -351,7 +347,7 @@ fn blended_corner(
         if cross.abs() < 1e-9 {
             continue;
         }
-        let q = p_in + t_in * (p_out - p_in).perp_dot(t_out) / cross;
+        let q = lines_meet(p_in, t_in, p_out, t_out);
         // The tangents must meet ahead of the blend's start and behind its end.
         if (q - p_in).dot(t_in) <= 0.0 || (p_out - q).dot(t_out) <= 0.0 {
             continue;
@@ -363,12 +359,7 @@ fn blended_corner(
             // An arc of the radius between the two tangents, joined to the
             // curve along them: the tangents' own lines are straight, so
             // nothing turns tighter than the arc.
-            let arc_start = q - t_in * reach;
-            let centre = arc_start + t_in.perp() * radius * turn.signum();
-            let steps = ((turn.abs().to_degrees() / ARC_STEP_DEG).ceil() as usize).max(2);
-            (0..=steps)
-                .map(|k| centre + DVec2::from_angle(turn * k as f64 / steps as f64).rotate(arc_start - centre))
-                .collect()
+            arc_from(q, t_in, turn, reach, radius)
         } else if quadratic_min_radius(p_in, q, p_out) >= radius {
             let by_turn = (turn.abs().to_degrees() / ARC_STEP_DEG).ceil() as usize;
             let by_length = ((p_out - p_in).length() / (0.25 * radius)).ceil() as usize;
@@ -402,12 +393,36 @@ fn quadratic_min_radius(p0: DVec2, p1: DVec2, p2: DVec2) -> f64 {
         .fold(f64::INFINITY, f64::min)
 }
 
-/// The signed turn at vertex `i` of a polygon (wrapping), radians.
-fn turn_at(points: &[DVec2], i: usize) -> f64 {
+/// The signed turn at each vertex of a polyline, radians: wrapping on a
+/// loop, zero at an open curve's ends.
+fn turns(points: &[DVec2], closed: bool) -> Vec<f64> {
     let n = points.len();
-    let (prev, here, next) = (points[(i + n - 1) % n], points[i], points[(i + 1) % n]);
-    let (d_in, d_out) = (here - prev, next - here);
-    d_in.perp_dot(d_out).atan2(d_in.dot(d_out))
+    (0..n)
+        .map(|i| {
+            if !closed && (i == 0 || i + 1 == n) {
+                return 0.0;
+            }
+            let (prev, here, next) = (points[(i + n - 1) % n], points[i], points[(i + 1) % n]);
+            let (d_in, d_out) = (here - prev, next - here);
+            d_in.perp_dot(d_out).atan2(d_in.dot(d_out))
+        })
+        .collect()
+}
+
+/// Where the line through `p` along `t` meets the line through `q` along
+/// `u` (the two not parallel).
+fn lines_meet(p: DVec2, t: DVec2, q: DVec2, u: DVec2) -> DVec2 {
+    p + t * (q - p).perp_dot(u) / t.perp_dot(u)
+}
+
+/// An arc turning by `turn` from the point `reach` before `apex` on the
+/// line along `t_in` through it, on a circle of `radius`, its points every
+/// [`ARC_STEP_DEG`] or closer.
+fn arc_from(apex: DVec2, t_in: DVec2, turn: f64, reach: f64, radius: f64) -> Vec<DVec2> {
+    let arc_start = apex - t_in * reach;
+    let centre = arc_start + t_in.perp() * radius * turn.signum();
+    let steps = ((turn.abs().to_degrees() / ARC_STEP_DEG).ceil() as usize).max(2);
+    (0..=steps).map(|k| centre + DVec2::from_angle(turn * k as f64 / steps as f64).rotate(arc_start - centre)).collect()
 }
 
 /// How far a straight run goes from `apex` in `direction`, walking the
