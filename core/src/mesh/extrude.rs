@@ -13,6 +13,12 @@ use crate::geom::{Rect, Region};
 /// How far apart parts that touch at a single point are moved, in mm.
 const TOUCH_GAP_MM: f64 = 1e-3;
 
+/// How close to another ring's edge, in `f32` steps at the pattern's largest
+/// coordinate, a vertex counts as on it where parts came out welded: rounding to `f32` moves each
+/// coordinate by half a step, and the triangulation's own predicates round
+/// too. About 10⁻⁴ mm on a 200 mm pattern, far below any printer.
+const F32_CONTACT_ULPS: f64 = 4.0;
+
 /// Spikes narrower than this at their base are dropped before meshing
 /// ([`crate::geom::without_needles`]): far below any feature a printer or a
 /// laser makes, and above the rounding of `f32` for coordinates up to about
@@ -66,7 +72,27 @@ pub enum MeshError {
 /// ```
 pub fn extrude(region: &Region, thickness_mm: f64) -> Result<Mesh, MeshError> {
     checked_thickness(thickness_mm)?;
-    with_repairs(region, |region, split_junctions| extrude_exactly(region, thickness_mm, split_junctions, None))
+    let make = |contacts: bool| {
+        with_repairs(region, |region, split_junctions| {
+            extrude_exactly(region, thickness_mm, split_junctions, None, contacts)
+        })
+    };
+    let mesh = make(false)?;
+    // Each polygon is one body. A vertex of one part within rounding of
+    // another part's edge (parts the pattern stages moved apart by less
+    // than a short edge allows) is put into that edge by the triangulation,
+    // welding the two: seen on `vectorian195` along a wave, parts 10⁻⁵ mm
+    // apart, one pair welded. Such vertices are then found first
+    // ([`F32_CONTACT_ULPS`]) and moved off like touching points. Only
+    // then: looking for them on every pattern cost the corpus sweep a
+    // third more time.
+    if mesh.shell_count() < region.polygons.len()
+        && let Ok(apart) = make(true)
+        && apart.shell_count() > mesh.shell_count()
+    {
+        return Ok(apart);
+    }
+    Ok(mesh)
 }
 
 /// The inside of `region` cut into well-shaped triangles (no angle under
@@ -90,7 +116,7 @@ pub fn extrude(region: &Region, thickness_mm: f64) -> Result<Mesh, MeshError> {
 /// assert!((area - 80.0).abs() < 1e-9);
 /// ```
 pub fn triangulate_fine(region: &Region, edge_mm: f64) -> Result<Mesh, MeshError> {
-    with_repairs(region, |region, split_junctions| extrude_exactly(region, 0.0, split_junctions, Some(edge_mm)))
+    with_repairs(region, |region, split_junctions| extrude_exactly(region, 0.0, split_junctions, Some(edge_mm), false))
 }
 
 /// `Ok` for a thickness a solid can have: a positive number of mm.
@@ -152,6 +178,7 @@ fn extrude_exactly(
     thickness_mm: f64,
     split_junctions: bool,
     fine: Option<f64>,
+    contacts: bool,
 ) -> Result<Mesh, MeshError> {
     // STL stores `f32`: vertices are rounded to it first and welded by exact
     // position, so two vertices never become one only in the file.
@@ -179,6 +206,9 @@ fn extrude_exactly(
         .unzip();
     if split_junctions {
         crate::geom::insert_edge_contacts(&mut rounded, 0.0);
+    } else if contacts {
+        let extent = rounded.iter().flatten().fold(0.0f64, |m, p| m.max(p.x.abs()).max(p.y.abs()));
+        crate::geom::insert_edge_contacts(&mut rounded, F32_CONTACT_ULPS * f64::from(f32::EPSILON) * extent);
     }
     // Where rings touch at a point (parts meeting at a corner, two holes
     // tip to tip), a shared vertex would put four walls on one edge, so all
@@ -534,5 +564,34 @@ mod tests {
         assert_eq!(faces.len(), points.len());
         let filled = area(&points, &faces);
         assert!((filled - expected).abs() < 1e-9 * expected, "{filled} against {expected}");
+    }
+
+    #[test]
+    fn parts_that_rounding_lays_edge_on_edge_stay_two_bodies() {
+        // A trapezoid's short base a hair above a square's top edge, far
+        // less than an `f32` step at 150 mm: rounded for the file, the base
+        // lies on the edge, and the triangulation would weld the two parts
+        // along it.
+        let (x, y) = (150.0, 150.0);
+        use glam::DVec2;
+        let square = vec![
+            DVec2::new(x - 2.0, y - 4.0),
+            DVec2::new(x + 2.0, y - 4.0),
+            DVec2::new(x + 2.0, y),
+            DVec2::new(x - 2.0, y),
+        ];
+        let tip = vec![
+            DVec2::new(x - 0.3, y + 1e-9),
+            DVec2::new(x + 0.3, y + 1e-9),
+            DVec2::new(x + 2.0, y + 3.0),
+            DVec2::new(x - 2.0, y + 3.0),
+        ];
+        let region = Region::new(vec![
+            crate::geom::Polygon { outer: square, holes: vec![] },
+            crate::geom::Polygon { outer: tip, holes: vec![] },
+        ]);
+        let mesh = extrude(&region, 2.0).unwrap();
+        assert_eq!(mesh.shell_count(), 2);
+        assert!(mesh.sanity_check().is_ok(), "{:?}", mesh.sanity_check());
     }
 }
