@@ -12,7 +12,8 @@
 //! the final geometry equals the plan and the target, how far the geometry
 //! strays from the curve (in half bands), the near period and longest repeat
 //! of the shape classes along the pattern, the seam tangent jump (and, for a short period, whether a much higher
-//! variety weight avoids it), the stitching's worst stretch and shear of the pieces, and the
+//! variety weight avoids it), the stitching's worst stretch and shear of the pieces, how far
+//! the seams' endpoints were apart before stitching closed them, and the
 //! time of the whole pipeline. The summary prints one row per curve.
 
 #[path = "common/corpus.rs"]
@@ -114,6 +115,11 @@ struct Run {
     /// The stitching's worst stretch and shear (degrees) of the pieces, as reported.
     stretch: f64,
     shear_deg: f64,
+    /// The largest seam gap stitching closed, in exemplar heights
+    /// (`BandPattern::seam_gaps`), and the share of joined seams whose gap
+    /// is past [`POOR_FIT`].
+    gap: f64,
+    bad: f64,
     pieces: usize,
     time_ms: f64,
     states: usize,
@@ -139,6 +145,11 @@ struct Run {
 /// The variety weight of the probe for short periods: far above the default
 /// (0.8), so that variety outweighs every seam.
 const PROBE_VARIETY: f64 = 30.0;
+
+/// A seam gap, in exemplar heights, past which a seam reads as a poor fit:
+/// a stroke moved by more than about its own width, a fret's bar bent into
+/// an S.
+const POOR_FIT: f64 = 0.15;
 
 fn short_period(run: &Run) -> bool {
     run.status == "ok" && run.pieces >= 6 && run.period < 1.0 / 3.0
@@ -178,6 +189,8 @@ fn run_one(
         seam_deg: 0.0,
         stretch: 0.0,
         shear_deg: 0.0,
+        gap: 0.0,
+        bad: 0.0,
         pieces: 0,
         time_ms: 0.0,
         states: 0,
@@ -260,6 +273,8 @@ fn run_one(
     run.seam_deg = seam_kinks_deg(&band.region, &band.seams, tolerance).into_iter().fold(0.0, f64::max);
     run.stretch = band.distortion.stretch_max();
     run.shear_deg = band.distortion.shear_max_deg();
+    run.gap = band.seam_gap_max();
+    run.bad = band.seam_gaps.iter().filter(|&&g| g > POOR_FIT).count() as f64 / band.seam_gaps.len().max(1) as f64;
     run
 }
 
@@ -312,8 +327,8 @@ fn percentile(sorted: &[f64], q: f64) -> f64 {
 
 fn summary(runs: &[Run], curves: &[String]) -> String {
     let mut out = String::from(
-        "| curve | runs | answered | exact | none | cap | past cap: dominance / bounded | mesh | error | drift max | seam max ° | stretch p95 / max | shear p95 / max ° | period < ⅓ | of which avoidable | p50 ms | p95 ms | max ms |\n\
-         |---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n",
+        "| curve | runs | answered | exact | none | cap | past cap: dominance / bounded | mesh | error | drift max | seam max ° | stretch p95 / max | shear p95 / max ° | seam gap median / poor-fit seams | period < ⅓ | of which avoidable | p50 ms | p95 ms | max ms |\n\
+         |---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n",
     );
     let mut rows: Vec<(String, Vec<&Run>)> =
         curves.iter().map(|c| (c.clone(), runs.iter().filter(|r| &r.curve == c).collect::<Vec<_>>())).collect();
@@ -329,14 +344,15 @@ fn summary(runs: &[Run], curves: &[String]) -> String {
             values.sort_by(f64::total_cmp);
             values
         };
-        let (stretches, shears) = (sorted(|r| r.stretch), sorted(|r| r.shear_deg));
+        let (stretches, shears, gaps) = (sorted(|r| r.stretch), sorted(|r| r.shear_deg), sorted(|r| r.gap));
+        let poor = answered.iter().map(|r| r.bad).sum::<f64>() / answered.len().max(1) as f64;
         let past_cap = format!(
             "{} / {}",
             answered.iter().filter(|r| r.dominance).count(),
             answered.iter().filter(|r| r.bounded.is_some()).count()
         );
         out += &format!(
-            "| {name} | {} | {} | {} | {} | {} | {} | {} | {} | {:.2} | {:.1} | {:.2} / {:.2} | {:.1} / {:.1} | {} | {} | {:.1} | {:.1} | {:.1} |\n",
+            "| {name} | {} | {} | {} | {} | {} | {} | {} | {} | {:.2} | {:.1} | {:.2} / {:.2} | {:.1} / {:.1} | {:.2} / {:.1} % | {} | {} | {:.1} | {:.1} | {:.1} |\n",
             rs.len(),
             answered.len(),
             answered.iter().filter(|r| r.exact).count(),
@@ -351,6 +367,8 @@ fn summary(runs: &[Run], curves: &[String]) -> String {
             stretches.last().copied().unwrap_or(f64::NAN),
             percentile(&shears, 0.95),
             shears.last().copied().unwrap_or(f64::NAN),
+            percentile(&gaps, 0.5),
+            100.0 * poor,
             periodic.len(),
             periodic.iter().filter(|r| r.avoidable).count(),
             percentile(&times, 0.5),
@@ -381,7 +399,7 @@ fn main() {
         .collect();
     let mut runs = Vec::new();
     let mut csv = String::from(
-        "ornament,curve,target,status,exact,drift,period,repeat,seam_deg,stretch,shear_deg,pieces,time_ms,states,bounded,dominance,stages,matching,auto,avoidable,reason\n",
+        "ornament,curve,target,status,exact,drift,period,repeat,seam_deg,stretch,shear_deg,pieces,time_ms,states,bounded,dominance,stages,matching,auto,avoidable,gap,bad,reason\n",
     );
     let started = Instant::now();
     for file in &files {
@@ -400,7 +418,7 @@ fn main() {
                     r.avoidable = probe.status == "ok" && !short_period(&probe);
                 }
                 csv += &format!(
-                    "{},{},{},{},{},{:.3},{:.3},{:.3},{:.2},{:.3},{:.2},{},{:.2},{},{},{},{},{:.4},{:.2},{},\"{}\"\n",
+                    "{},{},{},{},{},{:.3},{:.3},{:.3},{:.2},{:.3},{:.2},{},{:.2},{},{},{},{},{:.4},{:.2},{},{:.4},{:.4},\"{}\"\n",
                     r.ornament,
                     r.curve,
                     r.target,
@@ -421,6 +439,8 @@ fn main() {
                     r.matching,
                     r.auto,
                     r.avoidable,
+                    r.gap,
+                    r.bad,
                     r.reason.replace('"', "'")
                 );
                 if r.status != "ok" && r.status != "none" || r.status == "ok" && !r.exact {

@@ -114,7 +114,9 @@ fn corpus_subset_meets_its_plan_in_the_band() {
 /// (`vectorian142`: 174 planned, 152 counted with the specks dropped). And
 /// a tip thinner than twice the stitching tolerance, whose long side's
 /// chord crossed its other side and pinched off specks the plan never had
-/// (`vectorian157` with 2 parts asked: 2 planned, 7 counted).
+/// (`vectorian157` with 2 parts asked: 2 planned, 7 counted). And parts
+/// 10⁻⁵ mm apart, which rounding to `f32` put tip to edge and the mesh
+/// welded (`vectorian195`: 330 parts, 329 bodies).
 /// Counted on the final geometry.
 #[test]
 fn runs_once_mapped_unlike_their_plan_come_out_as_planned() {
@@ -123,6 +125,7 @@ fn runs_once_mapped_unlike_their_plan_come_out_as_planned() {
         ("vectorian169.svg", Curve::star(5, 45.0).unwrap(), Target::Exactly(1), Target::Exactly(0), 0.6),
         ("vectorian142.svg", Curve::line(200.0).unwrap(), Target::Any, Target::Any, Settings::default().variety),
         ("vectorian157.svg", Curve::line(200.0).unwrap(), Target::Exactly(2), Target::Any, Settings::default().variety),
+        ("vectorian195.svg", Curve::wave(200.0).unwrap(), Target::Any, Target::Any, Settings::default().variety),
     ];
     for (name, curve, components, holes, variety) in runs {
         let Some(file) = corpus_file(name) else { return };
@@ -219,5 +222,51 @@ fn fills_of_corpus_ornaments_cross_only_where_their_exemplar_does() {
         let out = curve_statistics(&paths);
         assert_eq!(out.crossings_per_100mm, 0.0, "{name}: the fill crosses itself");
         assert!(out.length_mm > 300.0, "{name}: only {:.0} mm of paths", out.length_mm);
+    }
+}
+
+/// The share of a region's outline length, in band space, that runs within
+/// `tolerance_deg` of along or across the band.
+fn upright_share(region: &tracery_core::geom::Region, tolerance_deg: f64) -> f64 {
+    let (mut upright, mut total) = (0.0, 0.0);
+    for ring in region.rings() {
+        for (i, &a) in ring.iter().enumerate() {
+            let b = ring[(i + 1) % ring.len()];
+            let d = b - a;
+            let length = d.length();
+            // Degrees off the nearest axis, from 0 to 45.
+            let angle = d.y.atan2(d.x).to_degrees().rem_euclid(90.0);
+            if angle.min(90.0 - angle) <= tolerance_deg {
+                upright += length;
+            }
+            total += length;
+        }
+    }
+    upright / total.max(f64::MIN_POSITIVE)
+}
+
+/// A fret (`pgfhan43`, bars and hooks at right angles) has seams that fit
+/// exactly to vary it with, and others that move its bars by more than their
+/// thickness. The variety term used to buy the second kind, which bent the
+/// bars into S-curves; seams that do not fit now cost what they do to the
+/// pattern (`docs/solver.md`, *Seams that do not fit*). Checked on the
+/// stitched outline: nearly all of it still runs along or across the band,
+/// and the pattern is still varied (no period under a third of it).
+#[test]
+fn a_fret_keeps_its_bars_straight_and_still_varies() {
+    let Some(file) = corpus_file("pgfhan43.svg") else { return };
+    let exemplar = Exemplar::from_svg_file(&file, &LoadOptions::default()).unwrap();
+    let drawn = upright_share(&exemplar.region, 1.0);
+    assert!(drawn > 0.99, "the fret as drawn: {drawn}");
+    for curve in [Curve::line(200.0).unwrap(), Curve::circle(40.0).unwrap()] {
+        let mut settings = Settings::default();
+        settings.closed_pattern = curve.is_closed();
+        let s = synthesize(&exemplar, &curve, &settings, &Control::default()).unwrap();
+        let context = format!("closed={}", curve.is_closed());
+        let upright = upright_share(&s.band.region, 1.0);
+        assert!(upright > 0.97, "{context}: {:.1} % of the outline along or across the band", 100.0 * upright);
+        let classes = &s.shape_classes;
+        let period = near_period(classes);
+        assert!(3 * period >= classes.len(), "{context}: repeats every {period} of {} pieces", classes.len());
     }
 }

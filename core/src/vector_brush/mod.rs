@@ -46,7 +46,7 @@ pub use distortion::{Distortion, SAMPLES_PER_PIECE};
 pub use error::{ExemplarError, SliceError, SolveError, Unmet};
 pub use exemplar::{Exemplar, LoadOptions};
 pub use growing::Growing;
-pub use matching::{BREAK_COST, MATCH_WEIGHT, PairCost};
+pub use matching::{BREAK_COST, MATCH_WEIGHT, MISFIT_WEIGHT, PairCost};
 pub use on_surface::{SurfaceSynthesisError, make_band_on_surface, make_object_on_surface, make_on_surface, part_role};
 pub use piece::{Piece, PieceSet};
 pub use pipeline::{

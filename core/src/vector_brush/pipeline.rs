@@ -437,23 +437,43 @@ const VARIETY_BOOST: f64 = 4.0;
 const BOOST_MAX_STATES: usize = 500_000;
 
 /// The cheapest pattern, unless it is one motif over and over where the
-/// exemplar has more to give: then the search runs again with variety
-/// weighing [`VARIETY_BOOST`] times as much, and its pattern is taken if
-/// it is varied ([`VARIED`]). Seams that fit exactly cost nothing, so a plain
-/// rule repeated can be cheaper than any varied sequence; at the person's
-/// weight the variety term, which grows with the pattern just as the
-/// seams' cost does, then never catches up (`docs/solver.md`, *Variety*).
-/// A pattern from the second search carries that search's cost, the
-/// variety term at the heavier weight.
+/// exemplar has more to give. Seams that fit exactly cost nothing, so a
+/// plain rule repeated can be cheaper than any varied sequence; at the
+/// person's weight the variety term, which grows with the pattern just as
+/// the seams' cost does, then never catches up (`docs/solver.md`,
+/// *Variety*). Such a pattern is searched for again, first with the seams'
+/// misfit left out ([`crate::vector_brush::MISFIT_WEIGHT`]): where the only
+/// variety there is comes from seams that do not fit (a corner ornament
+/// whose flourishes join only roughly), a person wants the flourishes, not
+/// the rule. Its pattern is taken if it no longer repeats; else the search
+/// runs once more with variety weighing [`VARIETY_BOOST`] times as much,
+/// and that pattern is taken if it is varied ([`VARIED`]), the one without
+/// the misfit term if not. A pattern from a later search carries that
+/// search's cost.
 fn solve_varied(set: &PieceSet, options: &SolveOptions, control: &Control) -> Result<Solution, SolveError> {
     let first = super::solve(set, options, control)?;
     // The share of its pieces a pattern's autocorrelation counts as repeats.
     let repeated = |s: &Solution| s.autocorrelation / s.pieces.len().max(1) as f64;
-    let repetitive = first.pieces.len() >= 6 && repeated(&first) >= REPETITIVE;
-    if options.variety <= 0.0 || !repetitive || first.states > BOOST_MAX_STATES {
+    let repetitive = |s: &Solution| s.pieces.len() >= 6 && repeated(s) >= REPETITIVE;
+    if options.variety <= 0.0 || !repetitive(&first) || first.states > BOOST_MAX_STATES {
         return Ok(first);
     }
-    let mut boosted = options.clone();
+    let mut relaxed = options.clone();
+    relaxed.misfit_weight = 0.0;
+    let first = if options.misfit_weight > 0.0 {
+        match super::solve(set, &relaxed, control) {
+            // Repetitive or not, the pattern that may vary by seams that
+            // do not fit: where fitting seams give one motif over and
+            // over, what varies it is those seams.
+            Ok(other) if !repetitive(&other) || other.states > BOOST_MAX_STATES => return Ok(other),
+            Ok(other) => other,
+            Err(e) if e.is_cancelled() => return Err(e),
+            Err(_) => first,
+        }
+    } else {
+        first
+    };
+    let mut boosted = relaxed;
     boosted.variety *= VARIETY_BOOST;
     match super::solve(set, &boosted, control) {
         Ok(other) if repeated(&other) <= VARIED => Ok(other),

@@ -165,6 +165,9 @@ pub(crate) fn to_product(
     // The pieces' worst deformation by stitching, in band space too.
     facts.push("piece_stretch_max", Fact::Number(band.distortion.stretch_max()));
     facts.push("piece_shear_max_deg", Fact::Number(band.distortion.shear_max_deg()));
+    // How far apart the worst seam's endpoints were before stitching closed
+    // them, in exemplar heights.
+    facts.push("seam_gap_max", Fact::Number(band.seam_gap_max()));
     Ok(Product {
         fill_mm,
         region_mm: planar.region,

@@ -47,9 +47,21 @@ pub struct BandPattern {
     /// pieces, sampled along their outlines. Bending along the curve comes
     /// after and is not in it.
     pub distortion: Distortion,
+    /// For each seam that portals join, in order along `u`, how far apart
+    /// its worst-matched pair of endpoints was once the seam was aligned
+    /// (their mean offset taken out), as a fraction of the exemplar's
+    /// height: what stitching had to close by bending, apart from what the
+    /// offsets `δ` move. Measured independently of the solver's seam cost.
+    #[serde(default)]
+    pub seam_gaps: Vec<f64>,
 }
 
 impl BandPattern {
+    /// The largest of [`BandPattern::seam_gaps`], 0 without joined seams.
+    pub fn seam_gap_max(&self) -> f64 {
+        self.seam_gaps.iter().copied().fold(0.0, f64::max)
+    }
+
     /// How far the pattern reaches from the axis `v = 0`.
     pub fn extent(&self) -> f64 {
         self.region.reach_from_axis()
@@ -316,10 +328,14 @@ pub fn stitch(
         CurveKind::Open => (1..n).collect(),
         CurveKind::Closed => (1..=n).collect(),
     };
+    let mut seam_gaps = Vec::with_capacity(n);
     for k in seams_to_join {
         let Some((a, b)) = joined(k) else { continue };
         let ya: Vec<f64> = pieces[a].right_endpoints().map(|y| y + offsets[a]).collect();
         let yb: Vec<f64> = pieces[b].left_endpoints().map(|y| y + offsets[b]).collect();
+        let mean_gap = ya.iter().zip(&yb).map(|(p, q)| p - q).sum::<f64>() / ya.len().max(1) as f64;
+        let gap = ya.iter().zip(&yb).map(|(p, q)| (p - q - mean_gap).abs()).fold(0.0, f64::max);
+        seam_gaps.push(gap / set.exemplar_height.max(f64::MIN_POSITIVE));
         let targets: Vec<f64> = ya.iter().zip(&yb).map(|(p, q)| 0.5 * (p + q)).collect();
         // Top-to-bottom lists become increasing in v for the maps.
         let map = |ys: &[f64], delta: f64| {
@@ -508,5 +524,5 @@ pub fn stitch(
     let seams = seam_u[1..n].to_vec();
     let ends = (curve == CurveKind::Closed).then_some([0.0, length]);
     let region = joined_pieces(polygons.into_iter().flatten().collect(), &seams, ends);
-    BandPattern { region, length, seams, curve, distortion: Distortion::join(distortions) }
+    BandPattern { region, length, seams, curve, distortion: Distortion::join(distortions), seam_gaps }
 }

@@ -154,6 +154,10 @@ pub struct SolveOptions {
     /// of a 150 mm line; with two, every pair differs over 46% or more).
     /// Set against a variety weight of 0.3, it grows in proportion above it.
     pub diversity: f64,
+    /// Weight of each seam's misfit ([`crate::vector_brush::PairCost::d_misfit`]);
+    /// [`crate::vector_brush::MISFIT_WEIGHT`] unless a search is told to
+    /// vary a pattern whatever its seams cost.
+    pub misfit_weight: f64,
     /// On open curves, pieces the pattern must begin with (a pattern
     /// growing while it is drawn keeps what is already laid): the search
     /// only extends them. Where they cannot be extended to a pattern that
@@ -180,6 +184,7 @@ impl SolveOptions {
             seed: 0,
             avoid: Vec::new(),
             diversity: 2.0,
+            misfit_weight: crate::vector_brush::MISFIT_WEIGHT,
             prefix: Vec::new(),
         }
     }

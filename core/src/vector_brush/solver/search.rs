@@ -424,7 +424,7 @@ pub(super) fn search_with(
     for a in 0..n {
         for b in 0..n {
             if let Some(pair) = set.pair(a, b) {
-                cost[a * n + b] = pair.cost;
+                cost[a * n + b] = pair.cost_at(options.misfit_weight);
                 tau[a * n + b] = pair.tau;
                 if set.joining(a, b).is_none() {
                     keep[a * n + b] = 0.0;

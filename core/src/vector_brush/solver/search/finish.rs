@@ -9,13 +9,14 @@ pub(super) fn finish(set: &PieceSet, options: &SolveOptions, found: Found, toler
     let mut matching = 0.0;
     let mut descriptor = set.pieces[found.pieces[0]].descriptor.clone();
     for w in found.pieces.windows(2) {
-        matching += set.pair(w[0], w[1]).map_or(0.0, |p| p.cost);
+        matching += set.pair(w[0], w[1]).map_or(0.0, |p| p.cost_at(options.misfit_weight));
         descriptor = descriptor.join(&set.pieces[w[1]].descriptor).unwrap_or(descriptor);
     }
     let (components, holes, wraps) = match options.curve {
         CurveKind::Open => (descriptor.components(), descriptor.holes(), 0),
         CurveKind::Closed => {
-            matching += set.pair(found.pieces[n - 1], found.pieces[0]).map_or(0.0, |p| p.cost);
+            matching +=
+                set.pair(found.pieces[n - 1], found.pieces[0]).map_or(0.0, |p| p.cost_at(options.misfit_weight));
             let t = descriptor.close_loop().unwrap_or_default();
             (t.components, t.holes, t.wraps)
         }
