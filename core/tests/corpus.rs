@@ -115,7 +115,7 @@ fn corpus_subset_meets_its_plan_in_the_band() {
 /// a tip thinner than twice the stitching tolerance, whose long side's
 /// chord crossed its other side and pinched off specks the plan never had
 /// (`vectorian157` with 2 parts asked: 2 planned, 7 counted). And parts
-/// 10⁻⁵ mm apart, which rounding to `f32` put tip to edge and the mesh
+/// 10⁻⁵ mm apart, which rounding to `f32` laid edge on edge and the mesh
 /// welded (`vectorian195`: 330 parts, 329 bodies).
 /// Counted on the final geometry.
 #[test]

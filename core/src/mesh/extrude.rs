@@ -85,7 +85,7 @@ pub fn extrude(region: &Region, thickness_mm: f64) -> Result<Mesh, MeshError> {
     // apart, one pair welded. Such vertices are then found first
     // ([`F32_CONTACT_ULPS`]) and moved off like touching points. Only
     // then: looking for them on every pattern cost the corpus sweep a
-    // third more time.
+    // quarter more time (159 s to 198 s).
     if mesh.shell_count() < region.polygons.len()
         && let Ok(apart) = make(true)
         && apart.shell_count() > mesh.shell_count()
@@ -572,8 +572,8 @@ mod tests {
         // less than an `f32` step at 150 mm: rounded for the file, the base
         // lies on the edge, and the triangulation would weld the two parts
         // along it.
-        let (x, y) = (150.0, 150.0);
         use glam::DVec2;
+        let (x, y) = (150.0, 150.0);
         let square = vec![
             DVec2::new(x - 2.0, y - 4.0),
             DVec2::new(x + 2.0, y - 4.0),

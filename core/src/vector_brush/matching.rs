@@ -130,6 +130,8 @@ impl PairCost {
     /// assert!(pair.cost_at(0.0) < pair.cost);
     /// ```
     pub fn cost_at(&self, misfit_weight: f64) -> f64 {
+        // At the default weight the stored cost itself, to the last bit:
+        // adding and taking away the term would round it.
         if misfit_weight == MISFIT_WEIGHT {
             self.cost
         } else {

@@ -51,7 +51,9 @@ pub struct BandPattern {
     /// its worst-matched pair of endpoints was once the seam was aligned
     /// (their mean offset taken out), as a fraction of the exemplar's
     /// height: what stitching had to close by bending, apart from what the
-    /// offsets `δ` move. Measured independently of the solver's seam cost.
+    /// offsets `δ` move. The gap the seam cost's misfit term prices
+    /// (`PairCost::d_misfit` sums its squares), read off the endpoints
+    /// stitching moved.
     #[serde(default)]
     pub seam_gaps: Vec<f64>,
 }
