@@ -5,8 +5,10 @@
 //! half millimetre, and its corners must be rounded as those of the
 //! built-in frames are: the band turns them without being narrowed, and
 //! every built-in exemplar comes out as planned, counted on the final
-//! geometry.
+//! geometry. And a corner drawn by hand, wherever its stroke's control
+//! points fall, turns on the whole radius.
 
+use glam::DVec2;
 use tracery_core::control::Control;
 use tracery_core::curve::{Along, Curve, planar_topology};
 use tracery_core::quality::max_distance_from;
@@ -108,6 +110,37 @@ fn frames_stars_and_hearts_drawn_in_svg_turn_their_corners_as_planned() {
             assert!(drift_mm <= half_band_mm * 1.05, "{context}: {drift_mm:.2} mm off the curve");
             let rounding_mm = s.curve.points().iter().map(|&p| curve.distance(p)).fold(0.0, f64::max);
             assert!(rounding_mm < 1.25 * half_band_mm, "{context}: the corners moved {rounding_mm:.2} mm");
+        }
+    }
+}
+
+#[test]
+fn a_drawn_corner_is_rounded_on_the_whole_radius_wherever_its_points_fall() {
+    // A stroke's control points lie every 6 mm and seldom on its corner,
+    // which smoothing then spreads over several vertices: a V of two
+    // 70 mm legs at every turn up to 165°, its control points shifted
+    // past the corner by a quarter millimetre at a time.
+    let radius_mm = 6.25;
+    for turn_deg in [20.0f64, 45.0, 90.0, 120.0, 135.0, 150.0, 165.0] {
+        let d_out = DVec2::from_angle(turn_deg.to_radians());
+        for k in 0..24 {
+            let past_mm = k as f64 * 0.25;
+            let points: Vec<DVec2> = (0..24)
+                .map(|i| -70.0 + past_mm + 6.0 * i as f64)
+                .filter(|&s| s < 70.0)
+                .map(|s| if s < 0.0 { DVec2::new(s, 0.0) } else { d_out * s })
+                .collect();
+            let drawn = Curve::from_stroke(&points, false, 0.5).unwrap();
+            // Smoothing alone leaves all but the gentlest turns sharp.
+            let drawn_tightest = tightest_radius_mm(&drawn, 0.5);
+            assert!(
+                turn_deg < 45.0 || drawn_tightest < 0.5 * radius_mm,
+                "{turn_deg}° {past_mm} mm: {drawn_tightest:.2} mm"
+            );
+            let tightest = tightest_radius_mm(&drawn.with_rounded_corners(radius_mm), 0.5);
+            // Three points half a millimetre apart on an arc of 3° steps
+            // read its radius a little short.
+            assert!(tightest > 0.9 * radius_mm, "{turn_deg}° {past_mm} mm: turns on {tightest:.2} mm");
         }
     }
 }
