@@ -140,6 +140,7 @@ fn bad_input_gives_one_clear_line() {
         vec!["synth", "--exemplar", "lace", "--along", "circle:20", "--jump-ring", "start"],
         vec!["synth", "--exemplar", "lace", "--along", "line:100", "--nozzle", "9"],
         vec!["synth", "--exemplar", "lace", "--along", "line:100", "--alternative", "6"],
+        vec!["synth", "--exemplar", "lace", "--along", "square:60", "--corner-radius", "-1"],
     ] {
         let out = tracery().args(&args).output().unwrap();
         assert!(!out.status.success(), "{args:?}");

@@ -144,3 +144,41 @@ fn a_drawn_corner_is_rounded_on_the_whole_radius_wherever_its_points_fall() {
         }
     }
 }
+
+#[test]
+fn a_larger_corner_radius_squeezes_the_pattern_less_inside_each_corner() {
+    // The inside of a corner turned on a radius `r` by a band of half
+    // height `h` runs on `r − h`: 1.25 mm on the least radius of a 10 mm
+    // band, where the pattern is squeezed fivefold. A person who asks for
+    // 15 mm gets 10 mm there.
+    let frame = curve_from(&file("M10 10 H90 V90 H10 Z"), "frame-radius");
+    for exemplar_name in ["lace", "chain", "meander"] {
+        let exemplar = builtin(exemplar_name).unwrap();
+        let mut settings = Settings::default();
+        let half_band_mm = 0.5 * settings.band_mm;
+        for asked_mm in [0.0, 15.0] {
+            settings.corner_radius_mm = asked_mm;
+            let context = format!("{exemplar_name} round the frame, corner radius {asked_mm} mm");
+            let s = synthesize(&exemplar, &frame, &settings, &Control::default()).expect(&context);
+            let used_mm = settings.corner_radius_used_mm();
+            assert_eq!(used_mm, if asked_mm == 0.0 { 1.25 * half_band_mm } else { asked_mm });
+            // Measured on the curve the pattern follows, three points 2 mm
+            // apart (the arcs are drawn in steps of 3°, 0.8 mm long on
+            // 15 mm, which points closer together read as sharper turns):
+            // every corner turns on the radius used.
+            let tightest = tightest_radius_mm(&s.curve, 2.0);
+            assert!(tightest > 0.9 * used_mm && tightest < 1.1 * used_mm, "{context}: {tightest:.2} mm");
+            // An arc of radius `r` at a right angle keeps within
+            // `(√2 − 1)·r` of the corner it replaces.
+            let rounding_mm = s.curve.points().iter().map(|&p| frame.distance(p)).fold(0.0, f64::max);
+            assert!(rounding_mm < 0.42 * used_mm + 0.05, "{context}: the corners moved {rounding_mm:.2} mm");
+            // As planned, counted on the final geometry, and in the band.
+            let topology = planar_topology(&s.planar.region, &s.curve);
+            let counted = (topology.components as u32, topology.holes as u32);
+            assert_eq!(counted, (s.solution.components, s.solution.holes), "{context}: counted against planned");
+            assert_eq!(counted.0, 1, "{context}: one part asked");
+            let drift_mm = max_distance_from(&s.planar.region, &s.curve);
+            assert!(drift_mm <= half_band_mm * 1.05, "{context}: {drift_mm:.2} mm off the curve");
+        }
+    }
+}

@@ -58,6 +58,9 @@ pub struct BrushArgs {
     /// Thickness of the printed pattern, mm [default: 2].
     #[arg(long)]
     pub thickness: Option<f64>,
+    /// Radius of the arcs that round the curve's sharp corners, mm; never less than 1.25 half bands, which the band needs to turn without folding (0: that) [default: 0].
+    #[arg(long)]
+    pub corner_radius: Option<f64>,
     /// Seed that perturbs the pattern at random (0: none) [default: 0].
     #[arg(long)]
     pub seed: Option<u64>,
@@ -86,6 +89,7 @@ impl BrushArgs {
         s.min_portal_mm = self.min_portal.unwrap_or(s.min_portal_mm);
         s.scale = self.scale.unwrap_or(s.scale);
         s.thickness_mm = self.thickness.unwrap_or(s.thickness_mm);
+        s.corner_radius_mm = self.corner_radius.unwrap_or(s.corner_radius_mm);
         s.seed = self.seed.unwrap_or(s.seed);
         s.alternative = self.alternative.unwrap_or(s.alternative);
         s

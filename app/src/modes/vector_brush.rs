@@ -7,7 +7,8 @@ use tracery_core::Product;
 use tracery_core::control::Control;
 use tracery_core::curve::{Along, Curve};
 use tracery_core::vector_brush::{
-    ALTERNATIVES, Exemplar, Settings, SlicingMode, SynthesisError, Target, make_alternatives, make_product,
+    ALTERNATIVES, CORNER_RADIUS, Exemplar, Settings, SlicingMode, SynthesisError, Target, make_alternatives,
+    make_product,
 };
 
 use super::{ModeEnv, ModeJob, ModeUi, same};
@@ -85,6 +86,11 @@ pub fn pattern_ui(ui: &mut egui::Ui, s: &mut Settings, commands: &mut Vec<Comman
     target_ui(ui, "Holes", &mut s.holes, 0, 1..=500);
     ui.checkbox(&mut s.closed_pattern, "Closed pattern (loops run all around)");
     ui.add(egui::Slider::new(&mut s.band_mm, 2.0..=40.0).text("Band width (mm)"));
+    let least_mm = CORNER_RADIUS * 0.5 * s.band_mm;
+    ui.add(egui::Slider::new(&mut s.corner_radius_mm, 0.0..=40.0).text("Corners (mm)")).on_hover_text(format!(
+        "The radius of the arcs that round the curve's sharp corners: at least {least_mm:.2} mm, which the band needs to turn \
+         without folding; a larger radius squeezes the pattern less inside each corner"
+    ));
     ui.add(egui::Slider::new(&mut s.variety, 0.0..=2.0).text("Variety"));
     ui.add(egui::Slider::new(&mut s.scale, 0.25..=4.0).logarithmic(true).text("Scale"));
     ui.horizontal(|ui| {

@@ -121,9 +121,10 @@ pub fn synthesize(
 /// nozzle or a laser's kerf.
 pub const RESOLUTION_MM: f64 = 0.01;
 
-/// Radius of the arcs that replace a curve's sharp corners, in half bands:
-/// a little more than the band's half-height, so that its inner edge turns
-/// the corner instead of folding over itself.
+/// The least radius of the arcs that replace a curve's sharp corners, in
+/// half bands: a little more than the band's half-height, so that its inner
+/// edge turns the corner instead of folding over itself. A person may ask
+/// for more ([`Settings::corner_radius_mm`]).
 pub const CORNER_RADIUS: f64 = 1.25;
 
 /// How many times finer the chords are when a pattern is mapped again
@@ -274,7 +275,7 @@ pub(crate) fn laid_out(
     mut timings: Timings,
     control: &Control,
 ) -> Result<Vec<Synthesis>, SynthesisError> {
-    let curve = &curve.with_rounded_corners(CORNER_RADIUS * 0.5 * settings.band_mm);
+    let curve = &curve.with_rounded_corners(settings.corner_radius_used_mm());
     let kind = if curve.is_closed() { CurveKind::Closed } else { CurveKind::Open };
     let mut options = SolveOptions::new(curve.length() / scale);
     options.curve = kind;

@@ -5,7 +5,7 @@
 
 use serde::{Deserialize, Serialize};
 
-use super::{SliceOptions, SlicingMode, Target};
+use super::{CORNER_RADIUS, SliceOptions, SlicingMode, Target};
 pub use crate::setting::InvalidSetting;
 use crate::setting::{positive, positive_mm};
 
@@ -51,6 +51,12 @@ pub struct Settings {
     /// next one is made to differ from all before it (see
     /// `SolveOptions::avoid`), so it costs one more search.
     pub alternative: u32,
+    /// Radius of the arcs that round the curve's sharp corners, mm. Never
+    /// less than [`CORNER_RADIUS`] half bands, which the band needs to turn
+    /// a corner without folding its inner edge; 0 asks for that. A larger
+    /// radius squeezes the pattern less on the inside of each corner, and
+    /// makes the corners rounder ([`Settings::corner_radius_used_mm`]).
+    pub corner_radius_mm: f64,
 }
 
 /// How many alternatives the gallery offers (the best one included).
@@ -71,6 +77,7 @@ impl Default for Settings {
             thickness_mm: 2.0,
             seed: 0,
             alternative: 0,
+            corner_radius_mm: 0.0,
         }
     }
 }
@@ -93,6 +100,12 @@ impl Settings {
         if !(self.event_grouping.is_finite() && self.event_grouping >= 0.0) {
             return Err(InvalidSetting(format!("event grouping must be zero or more, not {}", self.event_grouping)));
         }
+        if !(self.corner_radius_mm.is_finite() && self.corner_radius_mm >= 0.0) {
+            return Err(InvalidSetting(format!(
+                "the corner radius must be zero or more millimetres, not {}",
+                self.corner_radius_mm
+            )));
+        }
         if self.alternative >= ALTERNATIVES {
             return Err(InvalidSetting(format!(
                 "the alternative must be between 0 and {}, not {}",
@@ -101,6 +114,21 @@ impl Settings {
             )));
         }
         Ok(())
+    }
+
+    /// The radius the curve's sharp corners are rounded with, mm: the one
+    /// asked for, or the least the band needs where that is less.
+    ///
+    /// ```
+    /// use tracery_core::vector_brush::Settings;
+    /// let mut settings = Settings::default();
+    /// // A 10 mm band needs arcs of 6.25 mm at least.
+    /// assert_eq!(settings.corner_radius_used_mm(), 6.25);
+    /// settings.corner_radius_mm = 12.0;
+    /// assert_eq!(settings.corner_radius_used_mm(), 12.0);
+    /// ```
+    pub fn corner_radius_used_mm(&self) -> f64 {
+        self.corner_radius_mm.max(CORNER_RADIUS * 0.5 * self.band_mm)
     }
 
     /// Millimetres per exemplar unit for an exemplar `exemplar_height` units tall.
