@@ -5,7 +5,7 @@
 //! ```text
 //! cargo run -p tracery-core --release --example sweep -- \
 //!     [--corpus DIR] [--every K] [--curves line,circle,...] [--targets 1/any,...] \
-//!     [--csv OUT.csv] [--markdown OUT.md] [--variety WEIGHT]
+//!     [--csv OUT.csv] [--markdown OUT.md] [--variety WEIGHT] [--corner-radius MM]
 //! ```
 //!
 //! Each run records whether it was answered, whether the topology counted on
@@ -47,6 +47,8 @@ struct Args {
     only: Option<String>,
     /// The variety weight, instead of the default setting's.
     variety: Option<f64>,
+    /// The corner radius asked for, mm, instead of the default setting's.
+    corner_radius_mm: Option<f64>,
 }
 
 const CURVES: [&str; 6] = ["line:200", "circle:40", "wave:200", "square:70", "hexagon:40", "star:45"];
@@ -68,6 +70,7 @@ fn parse_args() -> Args {
         sheets: None,
         only: None,
         variety: None,
+        corner_radius_mm: None,
     };
     let mut it = std::env::args().skip(1);
     while let Some(flag) = it.next() {
@@ -91,6 +94,7 @@ fn parse_args() -> Args {
             "--only" => args.only = Some(value),
             "--sheets" => args.sheets = Some(value.into()),
             "--variety" => args.variety = Some(value.parse().expect("--variety WEIGHT")),
+            "--corner-radius" => args.corner_radius_mm = Some(value.parse().expect("--corner-radius MM")),
             _ => panic!("unknown flag {flag}"),
         }
     }
@@ -168,10 +172,9 @@ fn run_one(
     curve: &Curve,
     targets: (Target, Target),
     svg_dir: Option<&std::path::Path>,
-    variety: Option<f64>,
+    base: &Settings,
 ) -> Run {
-    let mut settings = Settings::default();
-    settings.variety = variety.unwrap_or(settings.variety);
+    let mut settings = base.clone();
     settings.components = targets.0;
     settings.holes = targets.1;
     settings.closed_pattern = curve.is_closed();
@@ -402,6 +405,11 @@ fn main() {
         "ornament,curve,target,status,exact,drift,period,repeat,seam_deg,stretch,shear_deg,pieces,time_ms,states,bounded,dominance,stages,matching,auto,avoidable,gap,bad,reason\n",
     );
     let started = Instant::now();
+    let mut base = Settings::default();
+    base.variety = args.variety.unwrap_or(base.variety);
+    base.corner_radius_mm = args.corner_radius_mm.unwrap_or(base.corner_radius_mm);
+    let mut probe_base = base.clone();
+    probe_base.variety = PROBE_VARIETY;
     for file in &files {
         let exemplar = match Exemplar::from_svg_file(file, &LoadOptions::default()) {
             Ok(e) => e,
@@ -412,9 +420,9 @@ fn main() {
         };
         for (spec, curve) in &curves {
             for &t in &args.targets {
-                let mut r = run_one(&exemplar, spec, curve, t, args.svg_dir.as_deref(), args.variety);
+                let mut r = run_one(&exemplar, spec, curve, t, args.svg_dir.as_deref(), &base);
                 if short_period(&r) {
-                    let probe = run_one(&exemplar, spec, curve, t, None, Some(PROBE_VARIETY));
+                    let probe = run_one(&exemplar, spec, curve, t, None, &probe_base);
                     r.avoidable = probe.status == "ok" && !short_period(&probe);
                 }
                 csv += &format!(
