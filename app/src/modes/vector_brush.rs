@@ -87,7 +87,10 @@ pub fn pattern_ui(ui: &mut egui::Ui, s: &mut Settings, commands: &mut Vec<Comman
     ui.checkbox(&mut s.closed_pattern, "Closed pattern (loops run all around)");
     ui.add(egui::Slider::new(&mut s.band_mm, 2.0..=40.0).text("Band width (mm)"));
     let least_mm = CORNER_RADIUS * 0.5 * s.band_mm;
-    ui.add(egui::Slider::new(&mut s.corner_radius_mm, 0.0..=40.0).text("Corners (mm)")).on_hover_text(format!(
+    // In half millimetres: the arrow keys move a slider by its step, and
+    // without one they stuck at the first round value past 0.
+    let corners = egui::Slider::new(&mut s.corner_radius_mm, 0.0..=40.0).step_by(0.5).text("Corners (mm)");
+    ui.add(corners).on_hover_text(format!(
         "The radius of the arcs that round the curve's sharp corners: at least {least_mm:.2} mm, which the band needs to turn \
          without folding; a larger radius squeezes the pattern less inside each corner"
     ));
