@@ -6,6 +6,7 @@ use egui_kittest::kittest::Queryable;
 use tracery::dialogs::FileKind;
 use tracery::document::ModeSettings;
 use tracery::worker::JobState;
+use tracery_core::quality::tightest_turn;
 
 #[path = "common/drive.rs"]
 mod drive;
@@ -120,30 +121,6 @@ fn moving_a_slider_yields_a_new_result() {
     assert!(area(second) > area(&first), "a wider band gives a bigger pattern: {} then {}", area(&first), area(second));
 }
 
-/// The tightest turn of a polyline, mm: the smallest radius of the circle
-/// through three points `step_mm` apart along it.
-fn tightest_turn_mm(line: &[tracery_core::DVec2], step_mm: f64) -> f64 {
-    let mut along = vec![0.0];
-    for pair in line.windows(2) {
-        along.push(along.last().unwrap() + pair[0].distance(pair[1]));
-    }
-    let at = |s: f64| {
-        let k = along.partition_point(|&a| a <= s).clamp(1, line.len() - 1);
-        let t = ((s - along[k - 1]) / (along[k] - along[k - 1]).max(1e-12)).clamp(0.0, 1.0);
-        line[k - 1].lerp(line[k], t)
-    };
-    let length = *along.last().unwrap();
-    let count = (length / step_mm) as usize;
-    (1..count.saturating_sub(1))
-        .map(|k| {
-            let s = k as f64 * step_mm;
-            let (a, b, c) = (at(s - step_mm), at(s), at(s + step_mm));
-            let area2 = (b - a).perp_dot(c - a).abs();
-            if area2 < 1e-12 { f64::INFINITY } else { a.distance(b) * b.distance(c) * c.distance(a) / (2.0 * area2) }
-        })
-        .fold(f64::INFINITY, f64::min)
-}
-
 #[test]
 fn a_larger_corner_radius_turns_the_inside_of_a_sharp_corner_wider() {
     let mut harness = harness(vec![]);
@@ -158,7 +135,7 @@ fn a_larger_corner_radius_turns_the_inside_of_a_sharp_corner_wider() {
     let id = harness.state().doc.curves[0].id;
     let inside_before = {
         let edges = &harness.state().output(id).expect("a first pattern").overlays.band_edges_mm;
-        edges.iter().map(|e| tightest_turn_mm(e, 1.0)).fold(f64::INFINITY, f64::min)
+        edges.iter().map(|e| tightest_turn(e, false, 1.0)).fold(f64::INFINITY, f64::min)
     };
     harness.get_by_role_and_label(Role::Slider, "Corners (mm)").set_value_accesskit(15.0);
     harness.step();
@@ -173,7 +150,7 @@ fn a_larger_corner_radius_turns_the_inside_of_a_sharp_corner_wider() {
     // The band's inner edge turns the corner on the radius less half the
     // band: a quarter of a half band before, far more now.
     let inside_after =
-        output.overlays.band_edges_mm.iter().map(|e| tightest_turn_mm(e, 1.0)).fold(f64::INFINITY, f64::min);
+        output.overlays.band_edges_mm.iter().map(|e| tightest_turn(e, false, 1.0)).fold(f64::INFINITY, f64::min);
     let expected_mm = asked_mm - 0.5 * item.settings.band_mm;
     assert!(inside_before < 0.5 * expected_mm, "before: {inside_before:.2} mm");
     assert!(inside_after > 0.8 * expected_mm, "after: {inside_after:.2} mm, asked {asked_mm:.2} mm");

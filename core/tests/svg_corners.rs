@@ -11,9 +11,9 @@
 use glam::DVec2;
 use tracery_core::control::Control;
 use tracery_core::curve::{Along, Curve, planar_topology};
-use tracery_core::quality::max_distance_from;
+use tracery_core::quality::{max_distance_from, tightest_turn};
 use tracery_core::report::Warning;
-use tracery_core::vector_brush::{BUILTIN_NAMES, Settings, builtin, synthesize};
+use tracery_core::vector_brush::{BUILTIN_NAMES, Settings, Synthesis, builtin, synthesize};
 
 fn curve_from(svg: &str, name: &str) -> Curve {
     let path = std::env::temp_dir().join(format!("tracery-svg-corner-{}-{name}.svg", std::process::id()));
@@ -29,22 +29,19 @@ fn file(d: &str) -> String {
     )
 }
 
-/// The tightest turn of a polyline, as the radius of the circle through
-/// three points a little apart along it, mm.
+/// The tightest turn of the curve, mm (`quality::tightest_turn`).
 fn tightest_radius_mm(curve: &Curve, step_mm: f64) -> f64 {
-    let length = curve.length();
-    let count = (length / step_mm) as usize;
-    let ends = if curve.is_closed() { 0 } else { 1 };
-    (ends..count - ends)
-        .map(|k| {
-            let u = k as f64 * step_mm;
-            let at = |u: f64| curve.point(u.rem_euclid(length));
-            let (a, b, c) = (at(u - step_mm), at(u), at(u + step_mm));
-            // Circumradius: abc / (4 · area).
-            let area2 = (b - a).perp_dot(c - a).abs();
-            if area2 < 1e-12 { f64::INFINITY } else { a.distance(b) * b.distance(c) * c.distance(a) / (2.0 * area2) }
-        })
-        .fold(f64::INFINITY, f64::min)
+    tightest_turn(curve.points(), curve.is_closed(), step_mm)
+}
+
+/// One part, as planned (counted on the final geometry), and in the band.
+fn assert_one_part_as_planned_in_the_band(s: &Synthesis, half_band_mm: f64, context: &str) {
+    let topology = planar_topology(&s.planar.region, &s.curve);
+    let counted = (topology.components as u32, topology.holes as u32);
+    assert_eq!(counted, (s.solution.components, s.solution.holes), "{context}: counted against planned");
+    assert_eq!(counted.0, 1, "{context}: one part asked");
+    let drift_mm = max_distance_from(&s.planar.region, &s.curve);
+    assert!(drift_mm <= half_band_mm * 1.05, "{context}: {drift_mm:.2} mm off the curve");
 }
 
 #[test]
@@ -97,17 +94,12 @@ fn frames_stars_and_hearts_drawn_in_svg_turn_their_corners_as_planned() {
             let narrowed = s.warnings.iter().any(|w| matches!(w, Warning::BandNarrowed { .. }));
             let overlapped = s.warnings.iter().any(|w| matches!(w, Warning::BandOverlapsItself { .. }));
             assert!(!narrowed && !overlapped, "{context}: {:?}", s.warnings);
-            // Counted on the final geometry: as planned, and as asked.
-            let topology = planar_topology(&s.planar.region, &s.curve);
-            let counted = (topology.components as u32, topology.holes as u32);
-            assert_eq!(counted, (s.solution.components, s.solution.holes), "{context}: counted against planned");
-            assert_eq!(counted.0, 1, "{context}: one part asked");
-            // In the band round the rounded corners, and that curve near
-            // the drawn one: an arc of 1.25 half bands keeps within its
-            // radius of the corner it replaces (0.41 of it at a right
-            // angle, 0.63 at the star's tips).
-            let drift_mm = max_distance_from(&s.planar.region, &s.curve);
-            assert!(drift_mm <= half_band_mm * 1.05, "{context}: {drift_mm:.2} mm off the curve");
+            // As planned, and as asked, counted on the final geometry; in
+            // the band round the rounded corners, and that curve near the
+            // drawn one: an arc of 1.25 half bands keeps within its radius
+            // of the corner it replaces (0.41 of it at a right angle, 0.63
+            // at the star's tips).
+            assert_one_part_as_planned_in_the_band(&s, half_band_mm, &context);
             let rounding_mm = s.curve.points().iter().map(|&p| curve.distance(p)).fold(0.0, f64::max);
             assert!(rounding_mm < 1.25 * half_band_mm, "{context}: the corners moved {rounding_mm:.2} mm");
         }
@@ -172,13 +164,7 @@ fn a_larger_corner_radius_squeezes_the_pattern_less_inside_each_corner() {
             // `(√2 − 1)·r` of the corner it replaces.
             let rounding_mm = s.curve.points().iter().map(|&p| frame.distance(p)).fold(0.0, f64::max);
             assert!(rounding_mm < 0.42 * used_mm + 0.05, "{context}: the corners moved {rounding_mm:.2} mm");
-            // As planned, counted on the final geometry, and in the band.
-            let topology = planar_topology(&s.planar.region, &s.curve);
-            let counted = (topology.components as u32, topology.holes as u32);
-            assert_eq!(counted, (s.solution.components, s.solution.holes), "{context}: counted against planned");
-            assert_eq!(counted.0, 1, "{context}: one part asked");
-            let drift_mm = max_distance_from(&s.planar.region, &s.curve);
-            assert!(drift_mm <= half_band_mm * 1.05, "{context}: {drift_mm:.2} mm off the curve");
+            assert_one_part_as_planned_in_the_band(&s, half_band_mm, &context);
         }
     }
 }

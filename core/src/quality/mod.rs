@@ -17,6 +17,59 @@ use glam::DVec2;
 use crate::curve::Curve;
 use crate::geom::{Region, closest_on_segment};
 
+/// The tightest turn of a polyline, as the smallest radius of the circle
+/// through three points `step` apart along it (arc length, the polyline's
+/// units). On a closed polyline the points wrap round; on an open one the
+/// first and last `step` are left out. Straight stretches read as infinite.
+///
+/// A polyline drawn in steps of angle `θ` and length `l` reads about
+/// `l / θ` where the three points straddle a vertex and `step` is under
+/// `l`: measure with a step longer than the segments to read the radius
+/// of the arc they draw.
+///
+/// ```
+/// use glam::DVec2;
+/// use tracery_core::quality::tightest_turn;
+/// // A circle of radius 10 in 360 steps, a quarter of it open.
+/// let arc: Vec<DVec2> = (0..=90).map(|k| DVec2::from_angle((k as f64).to_radians()) * 10.0).collect();
+/// // Within a hundredth: the points between vertices lie on chords.
+/// assert!((tightest_turn(&arc, false, 1.0) - 10.0).abs() < 0.1);
+/// let line = [DVec2::ZERO, DVec2::new(10.0, 0.0)];
+/// assert_eq!(tightest_turn(&line, false, 1.0), f64::INFINITY);
+/// ```
+pub fn tightest_turn(points: &[DVec2], closed: bool, step: f64) -> f64 {
+    let mut ring = points.to_vec();
+    if closed && ring.len() > 1 && ring.first() != ring.last() {
+        ring.push(ring[0]);
+    }
+    let mut along = Vec::with_capacity(ring.len());
+    along.push(0.0);
+    for pair in ring.windows(2) {
+        along.push(along[along.len() - 1] + pair[0].distance(pair[1]));
+    }
+    let length = along[along.len() - 1];
+    if ring.len() < 2 || step.is_nan() || step <= 0.0 || length <= 0.0 {
+        return f64::INFINITY;
+    }
+    let at = |s: f64| {
+        let s = if closed { s.rem_euclid(length) } else { s.clamp(0.0, length) };
+        let k = along.partition_point(|&a| a <= s).clamp(1, ring.len() - 1);
+        let t = ((s - along[k - 1]) / (along[k] - along[k - 1]).max(f64::MIN_POSITIVE)).clamp(0.0, 1.0);
+        ring[k - 1].lerp(ring[k], t)
+    };
+    let count = (length / step) as usize;
+    let ends = if closed { 0 } else { 1 };
+    (ends..count.saturating_sub(ends))
+        .map(|k| {
+            let s = k as f64 * step;
+            let (a, b, c) = (at(s - step), at(s), at(s + step));
+            // Circumradius: abc / (4 · area).
+            let area2 = (b - a).perp_dot(c - a).abs();
+            if area2 < 1e-12 { f64::INFINITY } else { a.distance(b) * b.distance(c) * c.distance(a) / (2.0 * area2) }
+        })
+        .fold(f64::INFINITY, f64::min)
+}
+
 /// Fraction of positions that must agree for a shift to count as a period.
 pub const PERIOD_AGREEMENT: f64 = 0.9;
 
