@@ -296,7 +296,7 @@ fn bends_and_directions(paths: &[(Vec<DVec2>, bool)]) -> (Vec<f64>, Vec<f64>) {
 }
 
 /// Points every `step` along a polyline (closed: back to its start).
-fn resample(points: &[DVec2], closed: bool, step: f64) -> Vec<DVec2> {
+pub(super) fn resample(points: &[DVec2], closed: bool, step: f64) -> Vec<DVec2> {
     let mut chain: Vec<DVec2> = points.to_vec();
     if closed && let Some(&first) = points.first() {
         chain.push(first);

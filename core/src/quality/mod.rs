@@ -38,31 +38,15 @@ use crate::geom::{Region, closest_on_segment};
 /// assert_eq!(tightest_turn(&line, false, 1.0), f64::INFINITY);
 /// ```
 pub fn tightest_turn(points: &[DVec2], closed: bool, step: f64) -> f64 {
-    let mut ring = points.to_vec();
-    if closed && ring.len() > 1 && ring.first() != ring.last() {
-        ring.push(ring[0]);
-    }
-    let mut along = Vec::with_capacity(ring.len());
-    along.push(0.0);
-    for pair in ring.windows(2) {
-        along.push(along[along.len() - 1] + pair[0].distance(pair[1]));
-    }
-    let length = along[along.len() - 1];
-    if ring.len() < 2 || step.is_nan() || step <= 0.0 || length <= 0.0 {
+    if step.is_nan() || step <= 0.0 {
         return f64::INFINITY;
     }
-    let at = |s: f64| {
-        let s = if closed { s.rem_euclid(length) } else { s.clamp(0.0, length) };
-        let k = along.partition_point(|&a| a <= s).clamp(1, ring.len() - 1);
-        let t = ((s - along[k - 1]) / (along[k] - along[k - 1]).max(f64::MIN_POSITIVE)).clamp(0.0, 1.0);
-        ring[k - 1].lerp(ring[k], t)
-    };
-    let count = (length / step) as usize;
-    let ends = if closed { 0 } else { 1 };
-    (ends..count.saturating_sub(ends))
+    let at = curves::resample(points, closed, step);
+    let n = at.len();
+    let middles = if closed { 0..n } else { 1..n.saturating_sub(1) };
+    middles
         .map(|k| {
-            let s = k as f64 * step;
-            let (a, b, c) = (at(s - step), at(s), at(s + step));
+            let (a, b, c) = (at[(k + n - 1) % n], at[k], at[(k + 1) % n]);
             // Circumradius: abc / (4 · area).
             let area2 = (b - a).perp_dot(c - a).abs();
             if area2 < 1e-12 { f64::INFINITY } else { a.distance(b) * b.distance(c) * c.distance(a) / (2.0 * area2) }
