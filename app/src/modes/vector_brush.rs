@@ -7,8 +7,7 @@ use tracery_core::Product;
 use tracery_core::control::Control;
 use tracery_core::curve::{Along, Curve};
 use tracery_core::vector_brush::{
-    ALTERNATIVES, CORNER_RADIUS, Exemplar, Settings, SlicingMode, SynthesisError, Target, make_alternatives,
-    make_product,
+    ALTERNATIVES, Exemplar, Settings, SlicingMode, SynthesisError, Target, make_alternatives, make_product,
 };
 
 use super::{ModeEnv, ModeJob, ModeUi, same};
@@ -86,7 +85,7 @@ pub fn pattern_ui(ui: &mut egui::Ui, s: &mut Settings, commands: &mut Vec<Comman
     target_ui(ui, "Holes", &mut s.holes, 0, 1..=500);
     ui.checkbox(&mut s.closed_pattern, "Closed pattern (loops run all around)");
     ui.add(egui::Slider::new(&mut s.band_mm, 2.0..=40.0).text("Band width (mm)"));
-    let least_mm = CORNER_RADIUS * 0.5 * s.band_mm;
+    let least_mm = s.corner_radius_least_mm();
     // In half millimetres: the arrow keys move a slider by its step, and
     // without one they stuck at the first round value past 0.
     let corners = egui::Slider::new(&mut s.corner_radius_mm, 0.0..=40.0).step_by(0.5).text("Corners (mm)");

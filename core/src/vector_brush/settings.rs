@@ -128,7 +128,13 @@ impl Settings {
     /// assert_eq!(settings.corner_radius_used_mm(), 12.0);
     /// ```
     pub fn corner_radius_used_mm(&self) -> f64 {
-        self.corner_radius_mm.max(CORNER_RADIUS * 0.5 * self.band_mm)
+        self.corner_radius_mm.max(self.corner_radius_least_mm())
+    }
+
+    /// The least radius the band needs to turn a sharp corner without
+    /// folding its inner edge, mm: [`CORNER_RADIUS`] half bands.
+    pub fn corner_radius_least_mm(&self) -> f64 {
+        CORNER_RADIUS * 0.5 * self.band_mm
     }
 
     /// Millimetres per exemplar unit for an exemplar `exemplar_height` units tall.
