@@ -50,6 +50,7 @@ pub mod region_fill;
 pub mod report;
 pub mod setting;
 pub mod surface;
+pub mod svg_input;
 pub mod vector_brush;
 
 pub use glam::DVec2;

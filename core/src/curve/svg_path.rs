@@ -45,7 +45,8 @@ fn has_physical_size(data: &[u8]) -> bool {
 /// assert!((points[0].distance(points[1]) - 80.0).abs() < 1e-3);
 /// ```
 pub fn first_path_points(data: &[u8]) -> Result<Vec<DVec2>, CurveError> {
-    let tree = usvg::Tree::from_data(data, &usvg::Options::default()).map_err(|e| CurveError::NotSvg(e.to_string()))?;
+    let tree =
+        usvg::Tree::from_data(data, &crate::svg_input::options()).map_err(|e| CurveError::NotSvg(e.to_string()))?;
     fn first(group: &usvg::Group) -> Option<&usvg::Path> {
         group.children().iter().find_map(|node| match node {
             usvg::Node::Group(g) => first(g),
@@ -105,7 +106,8 @@ pub struct SvgShape {
 /// assert!(shapes[1].filled && shapes[1].closed);
 /// ```
 pub fn svg_shapes(data: &[u8], tolerance_mm: f64) -> Result<Vec<SvgShape>, CurveError> {
-    let tree = usvg::Tree::from_data(data, &usvg::Options::default()).map_err(|e| CurveError::NotSvg(e.to_string()))?;
+    let tree =
+        usvg::Tree::from_data(data, &crate::svg_input::options()).map_err(|e| CurveError::NotSvg(e.to_string()))?;
     let scale = if has_physical_size(data) { MM_PER_PX } else { 1.0 };
     let tolerance = (tolerance_mm / scale).max(1e-9);
     let mut shapes = Vec::new();
