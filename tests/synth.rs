@@ -262,3 +262,44 @@ fn synth_report(args: &[&str], report: &std::path::Path) -> String {
     assert!(out.status.success(), "{args:?}: {}", String::from_utf8_lossy(&out.stderr));
     std::fs::read_to_string(report).unwrap()
 }
+
+#[test]
+fn a_hand_drawn_ellipse_in_svg_is_followed_as_drawn_and_flips() {
+    // A bracelet drawn by a fast hand (13 samples round a 52 × 32 mm
+    // ellipse), smoothed as the app smooths a stroke and saved as an SVG
+    // path in millimetres. The pattern runs along a curve as long as the
+    // one drawn: rounding the samples' corners takes a little off, never
+    // a needle three times as long.
+    use tracery_core::curve::{DrawnStroke, Hand, StrokeShape};
+    let dir = tempdir("drawn-ellipse");
+    let stroke = DrawnStroke::new(StrokeShape::Ellipse { width_mm: 52.0, height_mm: 32.0 }, Hand::Fast, 13);
+    let drawn = stroke.curve().unwrap();
+    let points: Vec<String> = drawn.points().iter().map(|p| format!("{:.3},{:.3}", p.x + 40.0, 30.0 - p.y)).collect();
+    let path = dir.join("ellipse.svg");
+    std::fs::write(
+        &path,
+        format!(
+            r#"<svg xmlns="http://www.w3.org/2000/svg" width="80mm" height="60mm" viewBox="0 0 80 60"><path d="M{} Z" fill="none" stroke="black"/></svg>"#,
+            points.join(" L")
+        ),
+    )
+    .unwrap();
+    let along = format!("svg:{}", path.display());
+    let (plain, flipped) = (dir.join("plain.svg"), dir.join("flipped.svg"));
+    let json = synth_report(
+        &["--exemplar", "lace", "--along", &along, "--closed-pattern", "--svg", &plain.display().to_string()],
+        &dir.join("plain.json"),
+    );
+    let length_mm: f64 = field(&json, "length_mm").parse().unwrap();
+    let ratio = length_mm / drawn.length();
+    assert!((0.97..=1.005).contains(&ratio), "drawn {:.1} mm, followed {length_mm:.1}", drawn.length());
+    assert_eq!(field(&json, "components"), "1");
+    // --flip turns the pattern over: the same curve, another pattern.
+    let json = synth_report(
+        &["--exemplar", "lace", "--along", &along, "--flip", "--svg", &flipped.display().to_string()],
+        &dir.join("flipped.json"),
+    );
+    assert_eq!(field(&json, "components"), "1");
+    let (a, b) = (std::fs::read_to_string(&plain).unwrap(), std::fs::read_to_string(&flipped).unwrap());
+    assert_ne!(a, b, "--flip changed nothing");
+}

@@ -2,6 +2,10 @@
 //! several topology targets, through the whole pipeline (synthesis and
 //! meshing), checked by measures the solver does not see.
 //!
+//! The curves are generated ones (`line:200`, `circle:40`, the frames) and
+//! strokes drawn by hand (`drawn-loops`, `drawn-open`), which people bring
+//! and which no generated curve stands for.
+//!
 //! ```text
 //! cargo run -p tracery-core --release --example sweep -- \
 //!     [--corpus DIR] [--every K] [--curves line,circle,...] [--targets 1/any,...] \
@@ -25,7 +29,7 @@ use std::path::PathBuf;
 use std::time::Instant;
 
 use tracery_core::control::Control;
-use tracery_core::curve::{Along, Curve, planar_topology};
+use tracery_core::curve::{Along, Curve, DrawnStroke, Hand, StrokeShape, planar_topology};
 use tracery_core::export::region_to_svg;
 use tracery_core::geom::Region;
 use tracery_core::mesh::extrude;
@@ -51,7 +55,42 @@ struct Args {
     corner_radius_mm: Option<f64>,
 }
 
-const CURVES: [&str; 6] = ["line:200", "circle:40", "wave:200", "square:70", "hexagon:40", "star:45"];
+const CURVES: [&str; 8] =
+    ["line:200", "circle:40", "wave:200", "square:70", "hexagon:40", "star:45", "drawn-loops", "drawn-open"];
+
+/// The curves a sweep runs along: one for every ornament, or one drawn by
+/// hand for each (`drawn-loops`, `drawn-open`: the shapes of
+/// `DrawnStroke::shapes`, each ornament along the next one, by a fast and a
+/// slow hand in turn, smoothed as the app smooths a stroke).
+enum Curves {
+    Fixed(Curve),
+    Drawn(Vec<StrokeShape>),
+}
+
+impl Curves {
+    fn parse(spec: &str) -> Curves {
+        let shapes = DrawnStroke::shapes();
+        match spec {
+            "drawn-loops" => Curves::Drawn(shapes.into_iter().filter(|s| s.is_loop()).collect()),
+            "drawn-open" => Curves::Drawn(shapes.into_iter().filter(|s| !s.is_loop()).collect()),
+            _ => match Along::parse(spec) {
+                Ok(Along::Curve(c)) => Curves::Fixed(c),
+                other => panic!("{spec} is not a curve: {other:?}"),
+            },
+        }
+    }
+
+    /// The curve for the `k`th ornament.
+    fn for_ornament(&self, k: usize) -> Curve {
+        match self {
+            Curves::Fixed(c) => c.clone(),
+            Curves::Drawn(shapes) => {
+                let hand = if (k / shapes.len()).is_multiple_of(2) { Hand::Fast } else { Hand::Slow };
+                DrawnStroke::new(shapes[k % shapes.len()], hand, k as u64).curve().expect("drawn strokes are long")
+            }
+        }
+    }
+}
 const TARGETS: [&str; 4] = ["1/any", "any/any", "1/0", "2/any"];
 
 fn target(text: &str) -> Target {
@@ -392,14 +431,7 @@ fn main() {
     if let Some(dir) = &args.svg_dir {
         std::fs::create_dir_all(dir).expect("create the SVG folder");
     }
-    let curves: Vec<(String, Curve)> = args
-        .curves
-        .iter()
-        .map(|spec| match Along::parse(spec) {
-            Ok(Along::Curve(c)) => (spec.clone(), c),
-            other => panic!("{spec} is not a curve: {other:?}"),
-        })
-        .collect();
+    let curves: Vec<(String, Curves)> = args.curves.iter().map(|spec| (spec.clone(), Curves::parse(spec))).collect();
     let mut runs = Vec::new();
     let mut csv = String::from(
         "ornament,curve,target,status,exact,drift,period,repeat,seam_deg,stretch,shear_deg,pieces,time_ms,states,bounded,dominance,stages,matching,auto,avoidable,gap,bad,reason\n",
@@ -410,7 +442,7 @@ fn main() {
     base.corner_radius_mm = args.corner_radius_mm.unwrap_or(base.corner_radius_mm);
     let mut probe_base = base.clone();
     probe_base.variety = PROBE_VARIETY;
-    for file in &files {
+    for (k, file) in files.iter().enumerate() {
         let exemplar = match Exemplar::from_svg_file(file, &LoadOptions::default()) {
             Ok(e) => e,
             Err(e) => {
@@ -418,7 +450,8 @@ fn main() {
                 continue;
             }
         };
-        for (spec, curve) in &curves {
+        for (spec, curves) in &curves {
+            let curve = &curves.for_ornament(k);
             for &t in &args.targets {
                 let mut r = run_one(&exemplar, spec, curve, t, args.svg_dir.as_deref(), &base);
                 if short_period(&r) {

@@ -123,10 +123,11 @@ fn a_drawn_corner_is_rounded_on_the_whole_radius_wherever_its_points_fall() {
                 .map(|s| if s < 0.0 { DVec2::new(s, 0.0) } else { d_out * s })
                 .collect();
             let drawn = Curve::from_stroke(&points, false, 0.5).unwrap();
-            // Smoothing alone leaves all but the gentlest turns sharp.
+            // Smoothing alone leaves all but the gentlest turns sharp (on
+            // a millimetre or two: it takes out the hand's tremor).
             let drawn_tightest = tightest_radius_mm(&drawn, 0.5);
             assert!(
-                turn_deg < 45.0 || drawn_tightest < 0.5 * radius_mm,
+                turn_deg < 45.0 || drawn_tightest < 0.6 * radius_mm,
                 "{turn_deg}° {past_mm} mm: {drawn_tightest:.2} mm"
             );
             let tightest = tightest_radius_mm(&drawn.with_rounded_corners(radius_mm), 0.5);

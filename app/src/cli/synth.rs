@@ -61,6 +61,9 @@ pub struct BrushArgs {
     /// Radius of the arcs that round the curve's sharp corners, mm; never less than 1.25 half bands, which the band needs to turn without folding (0: that) [default: 0].
     #[arg(long)]
     pub corner_radius: Option<f64>,
+    /// Turn the pattern over to the other side of the curve (a loop's pattern otherwise faces the same way whichever way it was drawn).
+    #[arg(long)]
+    pub flip: bool,
     /// Seed that perturbs the pattern at random (0: none) [default: 0].
     #[arg(long)]
     pub seed: Option<u64>,
@@ -90,6 +93,7 @@ impl BrushArgs {
         s.scale = self.scale.unwrap_or(s.scale);
         s.thickness_mm = self.thickness.unwrap_or(s.thickness_mm);
         s.corner_radius_mm = self.corner_radius.unwrap_or(s.corner_radius_mm);
+        s.flip = self.flip || s.flip;
         s.seed = self.seed.unwrap_or(s.seed);
         s.alternative = self.alternative.unwrap_or(s.alternative);
         s

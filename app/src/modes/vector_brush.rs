@@ -93,6 +93,10 @@ pub fn pattern_ui(ui: &mut egui::Ui, s: &mut Settings, commands: &mut Vec<Comman
         "The radius of the arcs that round the curve's sharp corners: at least {least_mm:.2} mm, which the band needs to turn \
          without folding; a larger radius squeezes the pattern less inside each corner"
     ));
+    ui.checkbox(&mut s.flip, "Flip").on_hover_text(
+        "Turn the pattern over to the other side of the curve. A loop's pattern faces the same way whichever way it \
+         was drawn; an open stroke keeps the side it was drawn with",
+    );
     ui.add(egui::Slider::new(&mut s.variety, 0.0..=2.0).text("Variety"));
     ui.add(egui::Slider::new(&mut s.scale, 0.25..=4.0).logarithmic(true).text("Scale"));
     ui.horizontal(|ui| {

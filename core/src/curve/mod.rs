@@ -6,13 +6,17 @@
 mod along;
 mod band_to_plane;
 mod corners;
+mod hand_drawn;
 mod parametric;
 mod planar_topology;
+mod rounding;
 mod svg_path;
 
 pub use along::{Along, AlongError, SVG_SPACING_MM};
 pub use band_to_plane::{MAPPING_TOLERANCE_MM, PlanarPattern, map_along, map_along_within};
 pub use corners::CORNER_ANGLE_DEG;
+pub use hand_drawn::{DrawnStroke, Hand, STROKE_SPACING_MM, StrokeShape};
 pub use parametric::{Curve, CurveCursor, CurveError};
 pub use planar_topology::{planar_topology, planar_topology_of_clean};
+pub use rounding::MAX_CORNER_TURN_DEG;
 pub use svg_path::{SvgShape, first_path_points, svg_shapes};

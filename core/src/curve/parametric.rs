@@ -19,6 +19,17 @@ pub struct Curve {
     closed: bool,
 }
 
+/// Pairs of Taubin passes that [`Curve::from_stroke`] smooths a stroke
+/// with: wiggles shorter than about ten samples fade, longer shapes stay.
+const STROKE_SMOOTHING_PASSES: usize = 4;
+
+/// Taubin's shrinking step.
+const TAUBIN_SHRINK: f64 = 0.5;
+
+/// Taubin's inflating step: a little stronger than the shrinking one, so
+/// that long shapes keep their size.
+const TAUBIN_INFLATE: f64 = -0.53;
+
 /// How many segments [`Curve::locate_near`] steps from its hint before it
 /// searches instead.
 const NEAR_STEPS: usize = 4;
@@ -147,7 +158,50 @@ impl Curve {
         for _ in 0..3 {
             pts = chaikin(&pts, closed);
         }
+        // The hand's tremor and the pointer's pixel steps, every half
+        // millimetre or so, outlast corner cutting: they wiggle the curve
+        // on a radius of a millimetre or two, tighter than a band turns.
+        // Taubin's smoothing takes out wiggles a few samples long without
+        // shrinking what is longer (a loop, a drawn corner's legs).
+        let mut pts = Curve::from_polyline(&pts, closed)?.resampled(spacing).points;
+        if closed {
+            pts.pop();
+        }
+        for _ in 0..STROKE_SMOOTHING_PASSES {
+            pts = relaxed(&pts, closed, TAUBIN_SHRINK);
+            pts = relaxed(&pts, closed, TAUBIN_INFLATE);
+        }
         Ok(Curve::from_polyline(&pts, closed)?.resampled(spacing))
+    }
+
+    /// The same curve run the other way: its left side becomes its right,
+    /// so a band along it shows the other face of its pattern.
+    ///
+    /// ```
+    /// use tracery_core::curve::Curve;
+    /// let circle = Curve::circle(10.0).unwrap();
+    /// assert!(circle.signed_area() > 0.0 && circle.reversed().signed_area() < 0.0);
+    /// assert_eq!(circle.reversed().reversed(), circle);
+    /// ```
+    pub fn reversed(&self) -> Curve {
+        let mut points = self.points.clone();
+        if self.closed {
+            points.pop();
+            // A loop keeps its start point.
+            points[1..].reverse();
+        } else {
+            points.reverse();
+        }
+        Curve::from_polyline(&points, self.closed).unwrap_or_else(|_| self.clone())
+    }
+
+    /// The area the curve winds round, positive where it runs
+    /// counter-clockwise (x right, y up); 0 for an open curve.
+    pub fn signed_area(&self) -> f64 {
+        if !self.closed {
+            return 0.0;
+        }
+        0.5 * self.points.windows(2).map(|w| w[0].perp_dot(w[1])).sum::<f64>()
     }
 
     /// A straight line of `length` along `+x`, from the origin.
@@ -397,6 +451,24 @@ impl Curve {
     pub fn distance(&self, p: DVec2) -> f64 {
         self.points.windows(2).map(|s| p.distance(closest_on_segment(p, s[0], s[1]).1)).fold(f64::INFINITY, f64::min)
     }
+}
+
+/// Each point moved by `factor` of the way to the middle of its neighbours
+/// (an open polyline's ends stay): one pass of Taubin's smoothing.
+fn relaxed(points: &[DVec2], closed: bool, factor: f64) -> Vec<DVec2> {
+    let n = points.len();
+    if n < 3 {
+        return points.to_vec();
+    }
+    (0..n)
+        .map(|i| {
+            if !closed && (i == 0 || i + 1 == n) {
+                return points[i];
+            }
+            let middle = 0.5 * (points[(i + n - 1) % n] + points[(i + 1) % n]);
+            points[i] + (middle - points[i]) * factor
+        })
+        .collect()
 }
 
 fn chaikin(points: &[DVec2], closed: bool) -> Vec<DVec2> {

@@ -275,7 +275,7 @@ pub(crate) fn laid_out(
     mut timings: Timings,
     control: &Control,
 ) -> Result<Vec<Synthesis>, SynthesisError> {
-    let curve = &curve.with_rounded_corners(settings.corner_radius_used_mm());
+    let curve = &settings.oriented(curve).with_rounded_corners(settings.corner_radius_used_mm());
     let kind = if curve.is_closed() { CurveKind::Closed } else { CurveKind::Open };
     let mut options = SolveOptions::new(curve.length() / scale);
     options.curve = kind;

@@ -6,6 +6,7 @@
 use serde::{Deserialize, Serialize};
 
 use super::{CORNER_RADIUS, SliceOptions, SlicingMode, Target};
+use crate::curve::Curve;
 pub use crate::setting::InvalidSetting;
 use crate::setting::{positive, positive_mm};
 
@@ -57,6 +58,13 @@ pub struct Settings {
     /// radius squeezes the pattern less on the inside of each corner, and
     /// makes the corners rounder ([`Settings::corner_radius_used_mm`]).
     pub corner_radius_mm: f64,
+    /// Turns the pattern over to the other side of the curve. Unflipped, a
+    /// loop's pattern faces the same way whichever way the loop was drawn:
+    /// as along a loop drawn counter-clockwise, the exemplar's top edge
+    /// toward the inside and its lower edge (lace's scallops) outside. An
+    /// open stroke keeps the side it was drawn with: the exemplar's top on
+    /// its left.
+    pub flip: bool,
 }
 
 /// How many alternatives the gallery offers (the best one included).
@@ -78,6 +86,7 @@ impl Default for Settings {
             seed: 0,
             alternative: 0,
             corner_radius_mm: 0.0,
+            flip: false,
         }
     }
 }
@@ -129,6 +138,24 @@ impl Settings {
     /// ```
     pub fn corner_radius_used_mm(&self) -> f64 {
         self.corner_radius_mm.max(self.corner_radius_least_mm())
+    }
+
+    /// `curve` run the way the pattern is laid along it: a loop
+    /// counter-clockwise, an open stroke as drawn, and either the other
+    /// way when [`Settings::flip`] is set.
+    ///
+    /// ```
+    /// use tracery_core::curve::Curve;
+    /// use tracery_core::vector_brush::Settings;
+    /// let mut settings = Settings::default();
+    /// let clockwise = Curve::circle(20.0).unwrap().reversed();
+    /// assert!(settings.oriented(&clockwise).signed_area() > 0.0);
+    /// settings.flip = true;
+    /// assert!(settings.oriented(&clockwise).signed_area() < 0.0);
+    /// ```
+    pub fn oriented(&self, curve: &Curve) -> Curve {
+        let reverse = if curve.is_closed() { (curve.signed_area() < 0.0) != self.flip } else { self.flip };
+        if reverse { curve.reversed() } else { curve.clone() }
     }
 
     /// The least radius the band needs to turn a sharp corner without
