@@ -257,7 +257,8 @@ fn run_one(
         Err(e) => {
             run.status = match &e {
                 SynthesisError::Solve(SolveError::TooManyStates { .. }) => "cap",
-                SynthesisError::Solve(SolveError::NoSolution(_)) => "none",
+                // Refused with a reason, like a proof that there is none.
+                SynthesisError::Solve(SolveError::NoSolution(_)) | SynthesisError::LoopTooSmall { .. } => "none",
                 SynthesisError::Mesh(_) => "mesh",
                 _ => "error",
             };

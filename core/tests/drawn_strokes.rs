@@ -12,7 +12,7 @@ use tracery_core::control::Control;
 use tracery_core::curve::{Curve, DrawnStroke, Hand, StrokeShape, planar_topology};
 use tracery_core::quality::max_distance_from;
 use tracery_core::report::Warning;
-use tracery_core::vector_brush::{Settings, builtin, synthesize};
+use tracery_core::vector_brush::{Settings, SynthesisError, builtin, synthesize};
 
 /// How near the followed curve keeps to the drawn one where that turns
 /// gently, mm.
@@ -225,11 +225,15 @@ fn patterns_along_hand_drawn_strokes_stay_in_the_band_round_the_drawn_stroke() {
             let context = format!("{exemplar_name} along {}", stroke.name());
             let mut settings = settings.clone();
             settings.closed_pattern = drawn.is_closed();
-            let Ok(s) = synthesize(&exemplar, &drawn, &settings, &Control::default()) else {
-                // Loops too small for the band are refused with a reason;
-                // the 8 mm circle is one.
-                assert!(drawn.length() < 40.0, "{context}: refused");
-                continue;
+            let s = match synthesize(&exemplar, &drawn, &settings, &Control::default()) {
+                Ok(s) => s,
+                Err(e) => {
+                    // Loops too narrow for the band are refused, saying so:
+                    // the 8 mm circle can be one.
+                    assert!(matches!(e, SynthesisError::LoopTooSmall { .. }), "{context}: {e}");
+                    assert!(drawn.length() < std::f64::consts::PI * settings.band_mm, "{context}: {e}");
+                    continue;
+                }
             };
             answered += 1;
             // The followed curve is the drawn one, as long.

@@ -50,8 +50,8 @@ pub use matching::{BREAK_COST, MATCH_WEIGHT, MISFIT_WEIGHT, PairCost};
 pub use on_surface::{SurfaceSynthesisError, make_band_on_surface, make_object_on_surface, make_on_surface, part_role};
 pub use piece::{Piece, PieceSet};
 pub use pipeline::{
-    CORNER_RADIUS, RESOLUTION_MM, Synthesis, SynthesisError, settled_region, synthesize, synthesize_alternatives,
-    synthesize_rectangle,
+    CORNER_RADIUS, LOOP_LEAST_BANDS, RESOLUTION_MM, Synthesis, SynthesisError, settled_region, synthesize,
+    synthesize_alternatives, synthesize_rectangle,
 };
 pub use portal::{Portal, portals_at};
 pub use positioning::{position_offsets, spread_offsets};
