@@ -5,6 +5,7 @@
 
 mod along;
 mod band_to_plane;
+mod blend_geometry;
 mod corners;
 mod hand_drawn;
 mod parametric;
