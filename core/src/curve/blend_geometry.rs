@@ -1,24 +1,11 @@
 //! The plane geometry of the blends that round a curve's tight turns
 //! (`rounding.rs`): where two lines meet, an arc between them, the tightest
-//! turn of a quadratic Bézier, and distances to segments.
+//! turn of a quadratic Bézier.
 
 use glam::DVec2;
 
 /// Degrees of arc between the points that draw a rounded corner.
 pub(super) const ARC_STEP_DEG: f64 = 3.0;
-
-/// The distance from `p` to an open polyline.
-pub(super) fn polyline_distance(p: DVec2, points: &[DVec2]) -> f64 {
-    points.windows(2).map(|w| segment_distance(p, w[0], w[1])).fold(f64::INFINITY, f64::min)
-}
-
-/// The distance from `p` to the segment `a`–`b`.
-pub(super) fn segment_distance(p: DVec2, a: DVec2, b: DVec2) -> f64 {
-    let d = b - a;
-    let length2 = d.length_squared();
-    let t = if length2 > 0.0 { ((p - a).dot(d) / length2).clamp(0.0, 1.0) } else { 0.0 };
-    p.distance(a + d * t)
-}
 
 /// The tightest radius of curvature of the quadratic Bézier `p0, p1, p2`,
 /// sampled finely enough for the blends here.

@@ -39,10 +39,9 @@
 use glam::DVec2;
 
 use super::Curve;
-use super::blend_geometry::{
-    ARC_STEP_DEG, arc_from, lines_meet, polyline_distance, quadratic_min_radius, segment_distance,
-};
+use super::blend_geometry::{ARC_STEP_DEG, arc_from, lines_meet, quadratic_min_radius};
 use super::corners::turns;
+use crate::geom::{closest_on_segment, polyline_distance};
 
 /// A stretch turning more than this (a hairpin, a U) is left as drawn: the
 /// lines beside it are nearly parallel, so an arc between them would reach
@@ -313,7 +312,7 @@ impl Polyline {
                         if !self.closed && !(0..n).contains(&next) {
                             break;
                         }
-                        if segment_distance(centre, self.at(j), self.at(next)) < inside {
+                        if centre.distance(closest_on_segment(centre, self.at(j), self.at(next)).1) < inside {
                             return false;
                         }
                         swept += turn(next);
@@ -394,7 +393,7 @@ impl Polyline {
             // corner of its turn would.
             Check::Turn(turn) => {
                 let allowed = radius * (1.0 / (0.5 * turn.abs()).cos() - 1.0) + BRIDGE_SLACK * radius;
-                arc.iter().all(|&p| polyline_distance(p, &replaced) <= allowed)
+                arc.iter().all(|&p| polyline_distance(&replaced, false, p) <= allowed)
             }
         }
     }
