@@ -37,6 +37,9 @@ const PREVIEW_WIDTH: f32 = 320.0;
 pub(crate) struct Autosave {
     pub(crate) path: Option<PathBuf>,
     pub(crate) saved: Document,
+    /// The text last written or read: a document holding NaN never equals
+    /// itself, so the text, not the document, says whether to write.
+    pub(crate) saved_text: Option<String>,
     pub(crate) last: Instant,
 }
 
@@ -130,7 +133,12 @@ impl TraceryApp {
             gesture: None,
             press_trail: Vec::new(),
             dialogs,
-            autosave: Autosave { path: autosave_path, saved: Document::default(), last: Instant::now() },
+            autosave: Autosave {
+                path: autosave_path,
+                saved: Document::default(),
+                saved_text: None,
+                last: Instant::now(),
+            },
             gesture_base: None,
             history_handled: false,
             commands: Vec::new(),

@@ -1,7 +1,7 @@
 //! Running commands: open, save, import, export, undo and the rest, and the
 //! autosave. Every button, menu entry and shortcut ends up in [`run`].
 
-use std::path::Path;
+use std::path::{Path, PathBuf};
 use std::sync::Arc;
 use std::time::Instant;
 
@@ -403,36 +403,84 @@ impl TraceryApp {
         }
     }
 
-    /// Restores the last session's document, if anything was drawn in it (on the canvas or on the model).
+    /// Restores the last session's document, if anything was drawn in it
+    /// (on the canvas or on the model). An autosave that cannot be read (a
+    /// newer format, a damaged file) is moved aside, never written over, and
+    /// the previous good copy is restored in its place when there is one.
     pub fn restore_autosave(&mut self) {
-        let Some(path) = &self.autosave.path else { return };
-        let Ok(text) = std::fs::read_to_string(path) else { return };
-        match Document::from_ron(&text) {
-            Ok(doc) if doc.has_drawing() => {
-                let curves = doc.curves.len() + doc.model.curves.len();
-                self.message = Some((format!("Restored your last session ({curves} curves)"), false));
-                self.autosave.saved = doc.clone();
-                self.doc = doc;
+        let Some(path) = self.autosave.path.clone() else { return };
+        let Ok(text) = std::fs::read_to_string(&path) else { return };
+        let (doc, text, note) = match Document::from_ron(&text) {
+            Ok(doc) => (doc, text, String::new()),
+            Err(e) => {
+                let aside = autosave_aside(&path);
+                let moved = std::fs::rename(&path, &aside).is_ok();
+                let kept = if moved { format!("kept as {}", aside.display()) } else { "left as it was".into() };
+                let previous = previous_copy(&path);
+                match std::fs::read_to_string(&previous).ok().and_then(|t| Document::from_ron(&t).ok().map(|d| (d, t)))
+                {
+                    Some((doc, text)) if moved => {
+                        (doc, text, format!(" from its previous copy (the last one could not be read: {e}; {kept})"))
+                    }
+                    _ => {
+                        self.message =
+                            Some((format!("Could not restore the last session: {e} (the file is {kept})"), true));
+                        if !moved {
+                            // Never written over: autosave is off for this session.
+                            self.autosave.path = None;
+                        }
+                        return;
+                    }
+                }
             }
-            Ok(_) => {}
-            Err(e) => self.message = Some((format!("Could not restore the last session: {e}"), true)),
+        };
+        if doc.has_drawing() {
+            let curves = doc.curves.len() + doc.model.curves.len();
+            self.message = Some((format!("Restored your last session ({curves} curves){note}"), false));
+            self.autosave.saved = doc.clone();
+            self.autosave.saved_text = Some(text);
+            self.doc = doc;
         }
     }
 
-    /// Writes the autosave when the document changed and enough time passed.
+    /// Writes the autosave when the document changed and enough time
+    /// passed, keeping the copy it replaces beside it.
     pub(crate) fn autosave_now(&mut self) {
         if !self.autosave_due() {
             return;
         }
         let Some(path) = self.autosave.path.clone() else { return };
         self.autosave.last = Instant::now();
+        let Ok(text) = self.doc.to_ron() else { return };
+        if self.autosave.saved_text.as_deref() == Some(text.as_str()) {
+            self.autosave.saved = self.doc.clone();
+            return;
+        }
         if let Some(dir) = path.parent() {
             let _ = std::fs::create_dir_all(dir);
         }
-        if let Ok(text) = self.doc.to_ron()
-            && write_atomically(&path, text.as_bytes()).is_ok()
+        // The copy being replaced was written (or read) whole by this app: it
+        // becomes the previous copy, which a damaged autosave falls back to.
+        if self.autosave.saved_text.is_some()
+            && let Ok(old) = std::fs::read(&path)
         {
+            let _ = write_atomically(&previous_copy(&path), &old);
+        }
+        if write_atomically(&path, text.as_bytes()).is_ok() {
             self.autosave.saved = self.doc.clone();
+            self.autosave.saved_text = Some(text);
         }
     }
+}
+
+/// The previous good copy of an autosave, beside it.
+pub fn previous_copy(autosave: &Path) -> PathBuf {
+    autosave.with_extension("previous.ron")
+}
+
+/// Where an autosave that could not be read is moved, beside it, under a
+/// name no other session uses.
+fn autosave_aside(autosave: &Path) -> PathBuf {
+    let seconds = std::time::SystemTime::now().duration_since(std::time::UNIX_EPOCH).map_or(0, |d| d.as_secs());
+    autosave.with_extension(format!("unreadable-{seconds}-{}.ron", std::process::id()))
 }

@@ -32,9 +32,12 @@ fn main() -> ExitCode {
         // The reader stopped reading (`tracery list | head -1`): nothing
         // more to say to it.
         Err(e) if is_broken_pipe(&e) => ExitCode::SUCCESS,
+        Err(e) if e.is::<cli::Interrupted>() => {
+            eprintln!("tracery: {e}");
+            ExitCode::from(130)
+        }
         Err(e) => {
-            // One line: the error and its causes.
-            let message = format!("{e:#}").replace('\n', " ");
+            let message = one_line(&e);
             eprintln!("tracery: {message}");
             ExitCode::FAILURE
         }
@@ -57,4 +60,21 @@ fn run_app() -> eframe::Result {
 /// Whether `e` comes from writing to a pipe whose reader has gone.
 fn is_broken_pipe(e: &anyhow::Error) -> bool {
     e.chain().any(|c| c.downcast_ref::<std::io::Error>().is_some_and(|io| io.kind() == std::io::ErrorKind::BrokenPipe))
+}
+
+/// The error and its causes on one line, each cause once: an error that
+/// already quotes its cause (`not an SVG file (…)`) is not followed by it again.
+fn one_line(e: &anyhow::Error) -> String {
+    let mut line = String::new();
+    for cause in e.chain() {
+        let text = cause.to_string().replace('\n', " ");
+        if line.contains(text.trim()) {
+            continue;
+        }
+        if !line.is_empty() {
+            line.push_str(": ");
+        }
+        line.push_str(text.trim());
+    }
+    line
 }

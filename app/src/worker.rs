@@ -12,7 +12,7 @@ use std::sync::atomic::{AtomicBool, AtomicU32, Ordering};
 use std::sync::mpsc::{Receiver, Sender, channel};
 use std::time::{Duration, Instant};
 
-use tracery_core::control::{Control, MaybeCancelled};
+use tracery_core::control::{Control, Internal, MaybeCancelled};
 
 /// Wait after the last change before computing, so a slider drag does not
 /// start a job per frame.
@@ -23,7 +23,7 @@ pub trait Job: Clone + PartialEq + Send + 'static {
     /// What it makes.
     type Output: Send + Sync + 'static;
     /// Why it failed; cancellations are dropped, not shown.
-    type Error: std::error::Error + MaybeCancelled + Send + Sync + 'static;
+    type Error: std::error::Error + MaybeCancelled + From<Internal> + Send + Sync + 'static;
     /// Does the work, checking `control` for cancellation and reporting progress.
     fn run(&self, control: &Control) -> Result<Self::Output, Self::Error>;
 }
@@ -228,7 +228,11 @@ impl<J: Job> Task<J> {
                 (self.wake)();
             };
             let control = Control { cancel: Some(&self.cancel), progress: Some(&report) };
-            let result = self.request.run(&control);
+            // A panic is a fault in Tracery: it becomes this job's error, so
+            // the item shows it and the app goes on, rather than the job
+            // staying "running" for ever.
+            let result = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| self.request.run(&control)))
+                .unwrap_or_else(|payload| Err(Internal::from_panic(&*payload).into()));
             // A cancelled job has a newer one behind it: drop its result quietly.
             if !matches!(&result, Err(e) if e.is_cancelled()) {
                 let _ = self.sender.send(Message { id: self.id, generation: self.generation, result });

@@ -13,6 +13,26 @@ use std::sync::atomic::{AtomicBool, Ordering};
 #[error("cancelled")]
 pub struct Cancelled;
 
+/// A fault in Tracery itself (a panic caught in a worker), never the
+/// person's input: said so, with what to report, and the app goes on.
+#[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]
+#[error(
+    "internal error: {0}. This is a fault in Tracery, not in your drawing: please report it with the project file (File > Save) and this message"
+)]
+pub struct Internal(pub String);
+
+impl Internal {
+    /// The message of a caught panic's payload.
+    pub fn from_panic(payload: &(dyn std::any::Any + Send)) -> Internal {
+        let text = payload
+            .downcast_ref::<&str>()
+            .map(|s| s.to_string())
+            .or_else(|| payload.downcast_ref::<String>().cloned())
+            .unwrap_or_else(|| "a worker stopped unexpectedly".into());
+        Internal(text)
+    }
+}
+
 /// Errors that can say whether they are a cancellation; the app drops
 /// cancelled results silently and shows every other error.
 pub trait MaybeCancelled {

@@ -54,3 +54,25 @@ fn remember(href: String) {
 pub fn refused_hrefs() -> Vec<String> {
     REFUSED.lock().unwrap_or_else(|poisoned| poisoned.into_inner()).clone()
 }
+
+/// Why an SVG could not be read, in words for the person who made it
+/// (usvg's own words are for developers: "enable svgz cargo feature").
+///
+/// ```
+/// use tracery_core::svg_input::describe;
+/// assert_eq!(
+///     describe(&usvg::Error::SvgzFeatureNotEnabled),
+///     "it is a compressed SVG (.svgz): save it as plain SVG and try again"
+/// );
+/// ```
+pub fn describe(e: &usvg::Error) -> String {
+    match e {
+        usvg::Error::NotAnUtf8Str => "it is not text (SVG is UTF-8 text)".into(),
+        usvg::Error::SvgzFeatureNotEnabled | usvg::Error::MalformedGZip => {
+            "it is a compressed SVG (.svgz): save it as plain SVG and try again".into()
+        }
+        usvg::Error::ElementsLimitReached => "it has more than a million elements".into(),
+        usvg::Error::InvalidSize => "it has no width and height (nor a viewBox) of more than zero".into(),
+        usvg::Error::ParsingFailed(xml) => format!("it is not well-formed XML ({xml})"),
+    }
+}

@@ -3,11 +3,11 @@
 
 use anyhow::{Result, bail};
 use clap::Parser;
-use tracery_core::control::Control;
 use tracery_core::print::finish;
 use tracery_core::region_fill::{CurveExemplar, Settings, make_product, parse_region};
 
 use super::output::{OutputArgs, write_outputs};
+use super::progress::Progress;
 
 /// Flags of `tracery fill`.
 #[derive(Parser, Debug, Clone, PartialEq)]
@@ -60,7 +60,7 @@ impl FillArgs {
 }
 
 /// Runs `tracery fill`.
-pub fn run(args: FillArgs) -> Result<()> {
+pub fn run(args: FillArgs, progress: &Progress) -> Result<()> {
     if args.output.along.is_some() {
         bail!("tracery fill takes its place from --region, not --along");
     }
@@ -68,12 +68,12 @@ pub fn run(args: FillArgs) -> Result<()> {
         bail!("--thicken and --jump-ring are not available on fills yet");
     }
     let settings = args.settings();
-    settings.validate()?;
+    super::flags::check("fill", settings.validate())?;
     args.output.svg_options()?;
     let print = args.output.print.settings()?;
     let exemplar = CurveExemplar::load(&args.exemplar)?;
     let region = parse_region(&args.region)?;
-    let product = make_product(&exemplar, &region, &settings, &Control::default())?;
+    let product = make_product(&exemplar, &region, &settings, &progress.control())?;
     let product = finish(product, &print);
-    write_outputs("fill", &exemplar.name, &args.region, &args.output, &product)
+    write_outputs("fill", &exemplar.name, &args.region, &args.output, &product, progress)
 }

@@ -3,7 +3,9 @@
 //! stderr and leaves no partial file.
 
 mod fill;
+mod flags;
 mod output;
+mod progress;
 mod quilt;
 mod raster;
 mod shade;
@@ -24,11 +26,26 @@ pub use synth::SynthArgs;
 
 /// Tracery: synthesize printable patterns. Without a command, opens the app.
 #[derive(Parser, Debug)]
-#[command(name = "tracery", version, about, allow_negative_numbers = true)]
+#[command(
+    name = "tracery",
+    version,
+    about,
+    allow_negative_numbers = true,
+    after_help = "Exit status: 0 done; 1 input refused or no pattern found (one line on stderr, no file written); 2 usage; 130 cancelled by Ctrl+C (no file written)."
+)]
 pub struct Cli {
     #[command(subcommand)]
     command: Option<Command>,
+    /// Print nothing but errors: no progress bar, no summary.
+    #[arg(long, short, global = true)]
+    quiet: bool,
 }
+
+/// A run stopped by Ctrl+C: nothing was written. `main` exits with 130, as
+/// shells do for a command ended by Ctrl+C.
+#[derive(Debug, thiserror::Error)]
+#[error("cancelled: no file was written")]
+pub struct Interrupted;
 
 impl Cli {
     /// Whether the command line asks for the app window rather than a command.
@@ -151,18 +168,40 @@ fn list() -> Result<()> {
 
 /// Runs the command line.
 pub fn run(cli: Cli) -> Result<()> {
-    match cli.command {
+    let quiet = cli.quiet;
+    let (name, output) = match &cli.command {
+        Some(Command::Synth(a)) => ("synth", &a.output),
+        Some(Command::Raster(a)) => ("raster", &a.output),
+        Some(Command::Shade(a)) => ("shade", &a.output),
+        Some(Command::Surface(a)) => ("surface", &a.output),
+        Some(Command::Fill(a)) => ("fill", &a.output),
+        Some(Command::Quilt(a)) => ("quilt", &a.output),
+        Some(Command::List { .. }) | None => return list_or_nothing(cli.command),
+    };
+    output.preflight()?;
+    let progress = progress::Progress::start(name, quiet);
+    let result = match cli.command {
+        Some(Command::Synth(args)) => synth::run(*args, &progress),
+        Some(Command::Raster(args)) => raster::run(*args, &progress),
+        Some(Command::Shade(args)) => shade::run(*args, &progress),
+        Some(Command::Surface(args)) => surface::run(*args, &progress),
+        Some(Command::Fill(args)) => fill::run(*args, &progress),
+        Some(Command::Quilt(args)) => quilt::run(*args, &progress),
+        Some(Command::List { .. }) | None => Ok(()),
+    };
+    match result {
+        Err(_) if progress.is_cancelled() => Err(Interrupted.into()),
+        other => other,
+    }
+}
+
+fn list_or_nothing(command: Option<Command>) -> Result<()> {
+    match command {
         Some(Command::List { bases: true, .. }) => list_bases(),
         Some(Command::List { curves: true, .. }) => list_curves(),
         Some(Command::List { swatches: true, .. }) => list_swatches(),
         Some(Command::List { raster: false, .. }) => list(),
         Some(Command::List { raster: true, .. }) => list_raster(),
-        Some(Command::Synth(args)) => synth::run(*args),
-        Some(Command::Raster(args)) => raster::run(*args),
-        Some(Command::Shade(args)) => shade::run(*args),
-        Some(Command::Surface(args)) => surface::run(*args),
-        Some(Command::Fill(args)) => fill::run(*args),
-        Some(Command::Quilt(args)) => quilt::run(*args),
-        None => Ok(()),
+        _ => Ok(()),
     }
 }

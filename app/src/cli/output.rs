@@ -3,7 +3,7 @@
 
 use std::path::PathBuf;
 
-use anyhow::{Result, bail};
+use anyhow::{Context, Result, bail};
 use serde::Serialize;
 
 use super::say;
@@ -16,7 +16,8 @@ use tracery_core::print::{JumpRings, PrintSettings, Printability, RingAt};
 use tracery_core::product::Facts;
 use tracery_core::report::{Timings, Warning};
 
-use crate::files::write_atomically;
+use super::progress::Progress;
+use crate::files::{check_writable, refuse_same_path, write_all_or_none};
 
 /// PNG resolution when `--dpi` is left out.
 const DEFAULT_DPI: f64 = 300.0;
@@ -74,7 +75,7 @@ pub struct PrintArgs {
     #[arg(long)]
     pub weak_bridge: Option<f64>,
     /// A jump ring for hanging the piece: start, end, top or X,Y (mm); repeat for more.
-    #[arg(long = "jump-ring", value_parser = parse_ring_at)]
+    #[arg(long = "jump-ring", value_parser = parse_ring_at, allow_hyphen_values = true)]
     pub jump_ring: Vec<RingAt>,
     /// The jump rings' hole diameter, mm [default: 2.5].
     #[arg(long)]
@@ -156,6 +157,30 @@ impl OutputArgs {
         Ok(())
     }
 
+    /// The output files asked for, each with its flag.
+    fn outputs(&self) -> Vec<(&'static str, &std::path::Path)> {
+        let named = [
+            ("--stl", &self.stl),
+            ("--3mf", &self.three_mf),
+            ("--png", &self.png),
+            ("--svg", &self.svg),
+            ("--report", &self.report),
+        ];
+        named.into_iter().filter_map(|(flag, path)| path.as_deref().map(|p| (flag, p))).collect()
+    }
+
+    /// Checks, before any work, that every output can be written and that
+    /// no two share a file: a run never computes for minutes only to find
+    /// it cannot write.
+    pub fn preflight(&self) -> Result<()> {
+        let outputs = self.outputs();
+        refuse_same_path(&outputs)?;
+        for (flag, path) in &outputs {
+            check_writable(path).with_context(|| flag.to_string())?;
+        }
+        Ok(())
+    }
+
     /// The SVG options these flags ask for.
     pub fn svg_options(&self) -> Result<SvgOptions> {
         let kerf_mm = self.kerf.unwrap_or(0.0);
@@ -200,7 +225,8 @@ pub struct Report<'a> {
 }
 
 /// Writes the outputs asked for and prints a summary. Every file is made in
-/// memory first, so that an error leaves none behind.
+/// memory first and all are put in place together, so that an error (or
+/// Ctrl+C) leaves none behind.
 ///
 /// `placed` says where the pattern went (the `--along` curve, or a shade's shape).
 pub fn write_outputs(
@@ -209,6 +235,7 @@ pub fn write_outputs(
     placed: &str,
     args: &OutputArgs,
     product: &Product,
+    progress: &Progress,
 ) -> Result<()> {
     let mut stl = Vec::new();
     let (mut triangles, mut shells) = (0, 0);
@@ -263,20 +290,29 @@ pub fn write_outputs(
         warnings: &product.warnings,
     };
     let json = serde_json::to_string_pretty(&report)?;
+    let mut files: Vec<(&std::path::Path, &[u8])> = Vec::new();
     if let Some(path) = &args.stl {
-        write_atomically(path, &stl)?;
+        files.push((path, &stl));
     }
     if let Some(path) = &args.three_mf {
-        write_atomically(path, three_mf.get_ref())?;
+        files.push((path, three_mf.get_ref()));
     }
     if let (Some(path), Some(png)) = (&args.png, &png) {
-        write_atomically(path, png)?;
+        files.push((path, png));
     }
     if let (Some(path), Some(svg)) = (&args.svg, &svg) {
-        write_atomically(path, svg.as_bytes())?;
+        files.push((path, svg.as_bytes()));
     }
     if let Some(path) = &args.report {
-        write_atomically(path, json.as_bytes())?;
+        files.push((path, json.as_bytes()));
+    }
+    if progress.is_cancelled() {
+        bail!(tracery_core::control::Cancelled);
+    }
+    write_all_or_none(&files)?;
+    progress.finish();
+    if progress.is_quiet() {
+        return Ok(());
     }
     let t = &product.topology;
     let openings = if t.loop_openings > 0 { format!(" (+{} loop opening)", t.loop_openings) } else { String::new() };

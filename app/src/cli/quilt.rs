@@ -5,7 +5,6 @@ use std::path::Path;
 
 use anyhow::{Context, Result, bail};
 use clap::Parser;
-use tracery_core::control::Control;
 use tracery_core::mesh::read_mesh_file;
 use tracery_core::mesh_quilt::{
     Direction, GuidanceField, SWATCH_NAMES, Settings, Swatch, builtin_swatch, make_product, make_surface_product,
@@ -14,6 +13,7 @@ use tracery_core::mesh_quilt::{
 use tracery_core::surface::SurfaceMesh;
 
 use super::output::{OutputArgs, write_outputs};
+use super::progress::Progress;
 
 /// `--direction`'s values.
 #[derive(clap::ValueEnum, Debug, Clone, Copy, PartialEq, Eq)]
@@ -94,13 +94,13 @@ pub fn load_swatch(spec: &str) -> Result<Swatch> {
 }
 
 /// Runs `tracery quilt`.
-pub fn run(args: QuiltArgs) -> Result<()> {
+pub fn run(args: QuiltArgs, progress: &Progress) -> Result<()> {
     args.output.refuse_planar_only("quilt", "area from --base", "quilts")?;
     if args.output.svg.is_some() || args.output.png.is_some() {
         bail!("tracery quilt makes a 3D solid: write it with --stl or --3mf, not --svg or --png");
     }
     let settings = args.settings();
-    settings.validate()?;
+    super::flags::check("quilt", settings.validate())?;
     let swatch = load_swatch(&args.swatch)?;
     let product = if args.base.starts_with("plane:") {
         if args.with_base {
@@ -109,7 +109,7 @@ pub fn run(args: QuiltArgs) -> Result<()> {
         if args.field.is_some() || args.direction.is_some() {
             bail!("a plane's texture follows the plane's axes: --field and --direction are for models");
         }
-        make_product(&swatch, parse_base(&args.base)?, &settings, &Control::default())?
+        make_product(&swatch, parse_base(&args.base)?, &settings, &progress.control())?
     } else {
         let surface = SurfaceMesh::new(super::surface::load_base(&args.base)?)?;
         let strokes = match &args.field {
@@ -129,8 +129,8 @@ pub fn run(args: QuiltArgs) -> Result<()> {
             None => Vec::new(),
         };
         let field = GuidanceField::of(&surface, settings.direction, &strokes)?;
-        let texture = make_surface_product(&swatch, &surface, &field, &settings, &Control::default())?;
+        let texture = make_surface_product(&swatch, &surface, &field, &settings, &progress.control())?;
         if args.with_base { unite_with_base(texture, &surface)? } else { texture }
     };
-    write_outputs("quilt", &swatch.name, &args.base, &args.output, &product)
+    write_outputs("quilt", &swatch.name, &args.base, &args.output, &product, progress)
 }

@@ -5,13 +5,13 @@ use std::path::Path;
 
 use anyhow::{Context, Result, bail};
 use clap::Parser;
-use tracery_core::control::Control;
 use tracery_core::curve::{Along, Curve};
 use tracery_core::geom::Region;
 use tracery_core::print::{add_jump_rings, finish};
 use tracery_core::raster_brush::{BUILTIN_NAMES, RasterExemplar, Settings, builtin, make_product};
 
 use super::output::{OutputArgs, write_outputs};
+use super::progress::Progress;
 
 /// Flags of `tracery raster`.
 #[derive(Parser, Debug, Clone, PartialEq)]
@@ -76,9 +76,9 @@ pub fn load_raster_exemplar(spec: &str) -> Result<RasterExemplar> {
 }
 
 /// Runs `tracery raster`.
-pub fn run(args: RasterArgs) -> Result<()> {
+pub fn run(args: RasterArgs, progress: &Progress) -> Result<()> {
     let settings = args.settings();
-    settings.validate()?;
+    super::flags::check("raster", settings.validate())?;
     args.output.svg_options()?;
     let print = args.output.print.settings()?;
     let rings = args.output.print.jump_rings()?;
@@ -91,7 +91,7 @@ pub fn run(args: RasterArgs) -> Result<()> {
     {
         along = Along::Curve(Curve::from_polyline(curve.points(), true)?);
     }
-    let product = make_product(&exemplar, &along, &settings, &Region::default(), &Control::default())?;
+    let product = make_product(&exemplar, &along, &settings, &Region::default(), &progress.control())?;
     let product = finish(add_jump_rings(product, &rings)?, &print);
-    write_outputs("raster", &exemplar.name, spec, &args.output, &product)
+    write_outputs("raster", &exemplar.name, spec, &args.output, &product, progress)
 }

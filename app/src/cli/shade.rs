@@ -4,12 +4,12 @@
 
 use anyhow::{Result, bail};
 use clap::Parser;
-use tracery_core::control::Control;
 use tracery_core::print::check_solid;
 use tracery_core::surface::{Shade, ShadeSettings};
 use tracery_core::vector_brush::make_shade;
 
 use super::output::{OutputArgs, write_outputs};
+use super::progress::Progress;
 use super::synth::{BrushArgs, load_exemplar};
 
 /// Flags of `tracery shade`.
@@ -20,10 +20,10 @@ pub struct ShadeArgs {
     #[arg(long)]
     pub exemplar: String,
     /// A cylinder: radius and height, mm, as R,H.
-    #[arg(long, conflicts_with = "cone")]
+    #[arg(long, conflicts_with = "cone", allow_hyphen_values = true)]
     pub cylinder: Option<String>,
     /// A cone: bottom radius, top radius and height, mm, as R1,R2,H.
-    #[arg(long)]
+    #[arg(long, allow_hyphen_values = true)]
     pub cone: Option<String>,
     /// Height of the solid rims at the top and the bottom, mm; 0 for none [default: 3].
     #[arg(long)]
@@ -59,16 +59,16 @@ impl ShadeArgs {
 }
 
 /// Runs `tracery shade`.
-pub fn run(args: ShadeArgs) -> Result<()> {
+pub fn run(args: ShadeArgs, progress: &Progress) -> Result<()> {
     args.output.refuse_planar_only("shade", "shape from --cylinder or --cone", "shades")?;
     let settings = args.brush.settings();
-    settings.validate()?;
+    super::flags::check("shade", settings.validate())?;
     let (shade, spec) = args.shade_settings()?;
     shade.validate(settings.band_mm)?;
     args.output.svg_options()?;
     let print = args.output.print.settings()?;
     let exemplar = load_exemplar(&args.exemplar)?;
-    let product = make_shade(&exemplar, &shade, &settings, &Control::default())?;
+    let product = make_shade(&exemplar, &shade, &settings, &progress.control())?;
     let product = check_solid(product, &print, settings.thickness_mm);
-    write_outputs("shade", &exemplar.name, &spec, &args.output, &product)
+    write_outputs("shade", &exemplar.name, &spec, &args.output, &product, progress)
 }

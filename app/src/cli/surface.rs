@@ -7,13 +7,13 @@ use std::path::Path;
 
 use anyhow::{Result, bail};
 use clap::{Parser, ValueEnum};
-use tracery_core::control::Control;
 use tracery_core::mesh::{Mesh, read_mesh_file};
 use tracery_core::print::check_solid;
-use tracery_core::surface::{BASE_NAMES, SurfaceMesh, SurfaceOutput, SurfaceSettings, builtin_base};
+use tracery_core::surface::{BASE_NAMES, DrawnError, SurfaceMesh, SurfaceOutput, SurfaceSettings, builtin_base};
 use tracery_core::vector_brush::make_object_on_surface;
 
 use super::output::{OutputArgs, write_outputs};
+use super::progress::Progress;
 use super::synth::{BrushArgs, load_exemplar};
 
 /// What `tracery surface` writes.
@@ -41,7 +41,7 @@ pub struct SurfaceArgs {
     /// Points of the curve, mm, as "x,y,z;x,y,z;..."; points off the surface snap onto it.
     /// Give it again for each further curve: all are made with the same
     /// flags and combined with the model once, into one object.
-    #[arg(long, required = true)]
+    #[arg(long, required = true, allow_hyphen_values = true)]
     pub points: Vec<String>,
     /// Close each curve back to its first point (a ring around a vase).
     #[arg(long)]
@@ -69,7 +69,7 @@ impl SurfaceArgs {
 
     fn curve(&self, points: &str) -> Result<SurfaceSettings> {
         let mut s = SurfaceSettings::default();
-        s.points_mm = SurfaceSettings::parse_points(points)?;
+        s.points_mm = SurfaceSettings::parse_points(points).map_err(drawn_error)?;
         s.closed = self.closed;
         s.twist_deg = self.twist.unwrap_or(s.twist_deg);
         s.output = match self.mode {
@@ -78,8 +78,16 @@ impl SurfaceArgs {
             SurfaceMode::Carve => SurfaceOutput::Carve,
         };
         s.wall_mm = self.wall.unwrap_or(s.wall_mm);
-        s.validate()?;
+        s.validate().map_err(drawn_error)?;
         Ok(s)
+    }
+}
+
+/// A refused point or setting named by its flag.
+fn drawn_error(e: DrawnError) -> anyhow::Error {
+    match e {
+        DrawnError::Setting(e) => super::flags::flagged("surface", e),
+        other => other.into(),
     }
 }
 
@@ -95,17 +103,17 @@ pub fn load_base(spec: &str) -> Result<Mesh> {
 }
 
 /// Runs `tracery surface`.
-pub fn run(args: SurfaceArgs) -> Result<()> {
+pub fn run(args: SurfaceArgs, progress: &Progress) -> Result<()> {
     args.output.refuse_planar_only("surface", "curve from --points on --mesh", "surfaces")?;
     let settings = args.brush.settings();
-    settings.validate()?;
+    super::flags::check("surface", settings.validate())?;
     let curves = args.surface_settings()?;
     args.output.svg_options()?;
     let print = args.output.print.settings()?;
     let surface = SurfaceMesh::new(load_base(&args.mesh)?)?;
     let exemplar = load_exemplar(&args.exemplar)?;
-    let product = make_object_on_surface(&exemplar, &surface, &curves, &settings, &Control::default())?;
+    let product = make_object_on_surface(&exemplar, &surface, &curves, &settings, &progress.control())?;
     let product = check_solid(product, &print, settings.thickness_mm);
     let spec = format!("{}:{}{}", args.mesh, args.points.join(" | "), if args.closed { " closed" } else { "" });
-    write_outputs("surface", &exemplar.name, &spec, &args.output, &product)
+    write_outputs("surface", &exemplar.name, &spec, &args.output, &product, progress)
 }

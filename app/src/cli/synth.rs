@@ -5,7 +5,6 @@ use std::path::Path;
 
 use anyhow::{Context, Result, bail};
 use clap::Parser;
-use tracery_core::control::Control;
 use tracery_core::curve::Along;
 use tracery_core::print::{add_jump_rings, finish};
 use tracery_core::vector_brush::{
@@ -13,6 +12,7 @@ use tracery_core::vector_brush::{
 };
 
 use super::output::{OutputArgs, write_outputs};
+use super::progress::Progress;
 
 /// Flags of `tracery synth`.
 #[derive(Parser, Debug, Clone, PartialEq)]
@@ -131,16 +131,16 @@ pub fn load_exemplar(spec: &str) -> Result<Exemplar> {
 }
 
 /// Runs `tracery synth`.
-pub fn run(args: SynthArgs) -> Result<()> {
+pub fn run(args: SynthArgs, progress: &Progress) -> Result<()> {
     let settings = args.settings();
-    settings.validate()?;
+    super::flags::check("synth", settings.validate())?;
     args.output.svg_options()?;
     let print = args.output.print.settings()?;
     let rings = args.output.print.jump_rings()?;
     let exemplar = load_exemplar(&args.exemplar)?;
     let spec = args.output.along()?;
     let along = Along::parse(spec)?;
-    let product = make_product(&exemplar, &along, &settings, &Control::default())?;
+    let product = make_product(&exemplar, &along, &settings, &progress.control())?;
     let product = finish(add_jump_rings(product, &rings)?, &print);
-    write_outputs("synth", &exemplar.name, spec, &args.output, &product)
+    write_outputs("synth", &exemplar.name, spec, &args.output, &product, progress)
 }

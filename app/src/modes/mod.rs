@@ -150,6 +150,9 @@ pub enum JobError {
     /// The jump rings could not be added.
     #[error(transparent)]
     JumpRing(#[from] JumpRingError),
+    /// A fault in Tracery itself, caught in a worker.
+    #[error(transparent)]
+    Internal(#[from] tracery_core::control::Internal),
 }
 
 impl MaybeCancelled for JobError {
@@ -158,7 +161,7 @@ impl MaybeCancelled for JobError {
             JobError::VectorBrush(e) => e.is_cancelled(),
             JobError::RasterBrush(e) => e.is_cancelled(),
             JobError::RegionFill(e) => e.is_cancelled(),
-            JobError::JumpRing(_) => false,
+            JobError::JumpRing(_) | JobError::Internal(_) => false,
         }
     }
 }

@@ -5,6 +5,7 @@
 use std::path::{Path, PathBuf};
 
 use super::{Curve, CurveError, first_path_points};
+use crate::setting::WORLD_EXTENT_MM;
 
 /// Distance under which an SVG path's last point closes it onto its first, mm.
 pub const SVG_CLOSE_TOLERANCE: f64 = 1e-6;
@@ -39,13 +40,23 @@ pub enum AlongError {
     /// An unknown kind.
     #[error("unknown curve kind '{0}': use line, circle, wave, square, hexagon, star, heart, rect or svg")]
     Kind(String),
-    /// A size that is not a positive number.
-    #[error("{what} must be a positive number of millimetres, not '{text}'")]
+    /// A size that is not a positive number of millimetres up to [`WORLD_EXTENT_MM`].
+    #[error("{what} must be a positive number of millimetres up to {WORLD_EXTENT_MM} (ten metres), not '{text}'")]
     Size {
         /// Which size.
         what: &'static str,
         /// What was given.
         text: String,
+    },
+    /// An SVG path reaching farther than [`WORLD_EXTENT_MM`] from the origin.
+    #[error(
+        "in {path}: the path reaches {reach_mm:e} mm from the origin, more than {WORLD_EXTENT_MM} mm (ten metres): check the file's units"
+    )]
+    TooFar {
+        /// The file.
+        path: PathBuf,
+        /// How far it reaches, mm.
+        reach_mm: f64,
     },
     /// A rectangle not given as `WxH`.
     #[error("rectangle '{0}' must be WxH, in millimetres")]
@@ -76,7 +87,7 @@ impl From<CurveError> for AlongError {
 
 fn positive(what: &'static str, text: &str) -> Result<f64, AlongError> {
     match text.trim().parse::<f64>() {
-        Ok(value) if value.is_finite() && value > 0.0 => Ok(value),
+        Ok(value) if value.is_finite() && value > 0.0 && value <= WORLD_EXTENT_MM => Ok(value),
         _ => Err(AlongError::Size { what, text: text.to_string() }),
     }
 }
@@ -128,6 +139,11 @@ impl Along {
         let context = format!("in {}: ", path.display());
         let points =
             first_path_points(&data).map_err(|source| AlongError::Curve { context: context.clone(), source })?;
+        // Checked before resampling, which allocates by the path's length.
+        let reach_mm = points.iter().map(|p| p.x.abs().max(p.y.abs())).fold(0.0, f64::max);
+        if reach_mm.is_nan() || reach_mm > WORLD_EXTENT_MM {
+            return Err(AlongError::TooFar { path: path.to_path_buf(), reach_mm });
+        }
         let closed = points.len() > 2
             && points.first().zip(points.last()).is_some_and(|(a, b)| a.distance(*b) < SVG_CLOSE_TOLERANCE);
         let curve = Curve::from_polyline(&points, closed).map_err(|source| AlongError::Curve { context, source })?;

@@ -74,6 +74,9 @@ pub enum CurveError {
     /// A coordinate is not a finite number.
     #[error("the curve has a coordinate that is not a number")]
     NotFinite,
+    /// A drawing reaching farther than [`crate::setting::WORLD_EXTENT_MM`] from its origin.
+    #[error("the drawing reaches {0:e} mm from its origin, more than 10000 mm (ten metres): check its units and size")]
+    TooFar(f64),
     /// A drawing the curve was to be taken from is not an SVG document.
     #[error("this is not an SVG file ({0})")]
     NotSvg(String),

@@ -45,8 +45,8 @@ fn has_physical_size(data: &[u8]) -> bool {
 /// assert!((points[0].distance(points[1]) - 80.0).abs() < 1e-3);
 /// ```
 pub fn first_path_points(data: &[u8]) -> Result<Vec<DVec2>, CurveError> {
-    let tree =
-        usvg::Tree::from_data(data, &crate::svg_input::options()).map_err(|e| CurveError::NotSvg(e.to_string()))?;
+    let tree = usvg::Tree::from_data(data, &crate::svg_input::options())
+        .map_err(|e| CurveError::NotSvg(crate::svg_input::describe(&e)))?;
     fn first(group: &usvg::Group) -> Option<&usvg::Path> {
         group.children().iter().find_map(|node| match node {
             usvg::Node::Group(g) => first(g),
@@ -106,9 +106,19 @@ pub struct SvgShape {
 /// assert!(shapes[1].filled && shapes[1].closed);
 /// ```
 pub fn svg_shapes(data: &[u8], tolerance_mm: f64) -> Result<Vec<SvgShape>, CurveError> {
-    let tree =
-        usvg::Tree::from_data(data, &crate::svg_input::options()).map_err(|e| CurveError::NotSvg(e.to_string()))?;
+    let tree = usvg::Tree::from_data(data, &crate::svg_input::options())
+        .map_err(|e| CurveError::NotSvg(crate::svg_input::describe(&e)))?;
     let scale = if has_physical_size(data) { MM_PER_PX } else { 1.0 };
+    // The tolerance is absolute: a drawing kilometres across would be
+    // flattened into billions of points. Checked before flattening.
+    let bbox = tree.root().abs_bounding_box();
+    let reach_mm = [bbox.left(), bbox.right(), bbox.top(), bbox.bottom()]
+        .iter()
+        .map(|c| f64::from(c.abs()) * scale)
+        .fold(0.0, f64::max);
+    if reach_mm.is_nan() || reach_mm > crate::setting::WORLD_EXTENT_MM {
+        return Err(CurveError::TooFar(reach_mm));
+    }
     let tolerance = (tolerance_mm / scale).max(1e-9);
     let mut shapes = Vec::new();
     fn walk(group: &usvg::Group, tolerance: f64, scale: f64, shapes: &mut Vec<SvgShape>, elements: &mut usize) {

@@ -84,6 +84,9 @@ pub enum QuiltError {
     /// The work was cancelled.
     #[error(transparent)]
     Cancelled(#[from] Cancelled),
+    /// A fault in Tracery itself, caught in a worker.
+    #[error(transparent)]
+    Internal(#[from] crate::control::Internal),
 }
 
 impl MaybeCancelled for QuiltError {

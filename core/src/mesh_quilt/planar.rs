@@ -139,8 +139,8 @@ pub fn quilt_plane(
     control: &Control,
 ) -> Result<Quilt, QuiltError> {
     settings.validate()?;
-    crate::setting::positive_mm("the width", width_mm)?;
-    crate::setting::positive_mm("the depth", depth_mm)?;
+    crate::setting::positive_mm("base", "the width", width_mm)?;
+    crate::setting::positive_mm("base", "the depth", depth_mm)?;
     let size = swatch.size_mm();
     let estimate = (swatch.triangle_count() as f64 * width_mm * depth_mm / (size.x * size.y)) as usize;
     if estimate > MAX_QUILT_TRIANGLES {

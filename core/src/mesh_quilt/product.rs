@@ -47,8 +47,10 @@ pub fn parse_base(spec: &str) -> Result<Base, QuiltError> {
     let (w, d) = size.split_once('x').ok_or_else(bad)?;
     let (width_mm, depth_mm) =
         (w.trim().parse::<f64>().map_err(|_| bad())?, d.trim().parse::<f64>().map_err(|_| bad())?);
-    crate::setting::positive_mm("the plane's width", width_mm)?;
-    crate::setting::positive_mm("the plane's depth", depth_mm)?;
+    let world = 0.0..=crate::setting::WORLD_EXTENT_MM;
+    let why = "larger than any printer's bed";
+    crate::setting::within("base", "the plane's width", width_mm, world.clone(), true, " mm", why)?;
+    crate::setting::within("base", "the plane's depth", depth_mm, world, true, " mm", why)?;
     Ok(Base::Plane { width_mm, depth_mm })
 }
 

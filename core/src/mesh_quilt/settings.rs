@@ -3,7 +3,7 @@
 
 use serde::{Deserialize, Serialize};
 
-use crate::setting::{InvalidSetting, positive};
+use crate::setting::{InvalidSetting, positive, within};
 
 /// Mesh quilting's settings, with the one set of defaults
 /// (`docs/mesh-quilting.md` explains them).
@@ -82,27 +82,40 @@ pub const MIN_CELLS_ACROSS: usize = 6;
 /// elements' feet and can reach through a thin wall.
 pub const MAX_SINK_MM: f64 = 3.0;
 
+/// The smallest swatch scale.
+pub const MIN_SCALE: f64 = 0.01;
+
+/// The largest swatch scale: a 40 mm swatch four metres across.
+pub const MAX_SCALE: f64 = 100.0;
+
 /// The most grid cells across a swatch.
 pub const MAX_CELLS_ACROSS: usize = 64;
 
 impl Settings {
     /// Checks every number is in range.
     pub fn validate(&self) -> Result<(), InvalidSetting> {
-        positive("the scale", self.scale, "")?;
+        within(
+            "scale",
+            "the scale",
+            self.scale,
+            MIN_SCALE..=MAX_SCALE,
+            false,
+            "",
+            "a swatch larger than any printer's bed",
+        )?;
         if !(MIN_CELLS_ACROSS..=MAX_CELLS_ACROSS).contains(&self.cells_across) {
-            return Err(InvalidSetting(format!(
-                "cells across the swatch must be {MIN_CELLS_ACROSS} to {MAX_CELLS_ACROSS}, not {}",
-                self.cells_across
-            )));
+            return Err(InvalidSetting::new(
+                "cells_across",
+                format!(
+                    "cells across the swatch must be {MIN_CELLS_ACROSS} to {MAX_CELLS_ACROSS}, not {}",
+                    self.cells_across
+                ),
+            ));
         }
-        positive("lambda", self.lambda, "")?;
-        positive("mu", self.mu, "")?;
-        if !(self.tolerance.is_finite() && (0.0..=1.0).contains(&self.tolerance)) {
-            return Err(InvalidSetting(format!("the tolerance must be 0 to 1, not {}", self.tolerance)));
-        }
-        if !(self.sink_mm.is_finite() && (0.0..=MAX_SINK_MM).contains(&self.sink_mm)) {
-            return Err(InvalidSetting(format!("the sink must be 0 to {MAX_SINK_MM} mm, not {}", self.sink_mm)));
-        }
+        positive("lambda", "lambda", self.lambda, "")?;
+        positive("mu", "mu", self.mu, "")?;
+        within("tolerance", "the tolerance", self.tolerance, 0.0..=1.0, false, "", "more than a whole cell")?;
+        within("sink_mm", "the sink", self.sink_mm, 0.0..=MAX_SINK_MM, false, " mm", "deeper than the elements stand")?;
         Ok(())
     }
 }

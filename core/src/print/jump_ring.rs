@@ -12,6 +12,11 @@ use crate::geom::{
 };
 use crate::mesh::extrude;
 use crate::report::Warning;
+use crate::setting::WORLD_EXTENT_MM;
+
+/// The longest stem that joins a ring to the pattern, mm: a longer one
+/// would bend and snap, and a ring placed farther is a mistake.
+pub const MAX_STEM_MM: f64 = 25.0;
 
 /// Where a jump ring goes.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
@@ -80,6 +85,26 @@ pub enum JumpRingError {
     /// A size is absurd.
     #[error("the jump ring's hole and wall must be at most 50 mm")]
     TooLarge,
+    /// A ring's point lies off the table.
+    #[error("the jump ring at ({x_mm:e}, {y_mm:e}) must lie within {WORLD_EXTENT_MM} mm of the origin (ten metres)")]
+    OffTheTable {
+        /// `x`, mm.
+        x_mm: f64,
+        /// `y`, mm.
+        y_mm: f64,
+    },
+    /// A ring's point lies too far from the pattern for a stem to hold it.
+    #[error(
+        "the jump ring at ({x_mm}, {y_mm}) is {distance_mm:.1} mm from the pattern: put it within {MAX_STEM_MM} mm, where a stem can hold it"
+    )]
+    TooFar {
+        /// `x`, mm.
+        x_mm: f64,
+        /// `y`, mm.
+        y_mm: f64,
+        /// From the pattern, mm.
+        distance_mm: f64,
+    },
     /// A ring at an end of a curve that has none.
     #[error("a loop has no ends: put the jump ring at the top or at a point")]
     NoEnds,
@@ -108,6 +133,13 @@ impl JumpRings {
         }
         if self.hole_mm > 50.0 || self.wall_mm > 50.0 {
             return Err(JumpRingError::TooLarge);
+        }
+        for at in &self.at {
+            if let RingAt::Point { x_mm, y_mm } = *at
+                && !(x_mm.abs() <= WORLD_EXTENT_MM && y_mm.abs() <= WORLD_EXTENT_MM)
+            {
+                return Err(JumpRingError::OffTheTable { x_mm, y_mm });
+            }
         }
         Ok(())
     }
@@ -195,6 +227,13 @@ pub fn add_jump_rings(mut product: Product, rings: &JumpRings) -> Result<Product
             && let Some(m) = nearest_outline_point(&product.region_mm, centre)
             && m.distance(centre) > outer - 0.5 * rings.wall_mm
         {
+            if m.distance(centre) > MAX_STEM_MM + outer {
+                return Err(JumpRingError::TooFar {
+                    x_mm: centre.x,
+                    y_mm: centre.y,
+                    distance_mm: m.distance(centre) - outer,
+                });
+            }
             // A stem from the ring's centre to a little inside the material.
             let dir = (m - centre).normalize_or_zero();
             let side = dir.perp() * (0.5 * rings.wall_mm);

@@ -82,14 +82,17 @@ impl RasterExemplar {
         if format != image::ImageFormat::Png {
             return Err(ExemplarError::NotPng(format!("it is {format:?}")));
         }
-        let decoded = image::load_from_memory_with_format(bytes, image::ImageFormat::Png)
-            .map_err(|e| ExemplarError::NotPng(e.to_string()))?;
-        if !decoded.color().has_alpha() {
-            return Err(ExemplarError::NoAlpha);
-        }
-        let (width, height) = (decoded.width(), decoded.height());
+        // The size is read from the header and checked before decoding: a
+        // valid picture too large to search is told so, not refused as
+        // damaged when the decoder's memory limit stops it.
+        let reader = || image::ImageReader::with_format(std::io::Cursor::new(bytes), image::ImageFormat::Png);
+        let (width, height) = reader().into_dimensions().map_err(|e| ExemplarError::NotPng(e.to_string()))?;
         if width > MAX_WIDTH_PX || height > MAX_HEIGHT_PX {
             return Err(ExemplarError::TooLarge { width, height, max_width: MAX_WIDTH_PX, max_height: MAX_HEIGHT_PX });
+        }
+        let decoded = reader().decode().map_err(|e| ExemplarError::NotPng(e.to_string()))?;
+        if !decoded.color().has_alpha() {
+            return Err(ExemplarError::NoAlpha);
         }
         RasterExemplar::from_rgba(name, width, height, decoded.into_rgba8().into_raw())
     }

@@ -2,7 +2,7 @@
 //! once for the document, the command line and the app.
 
 pub use crate::setting::InvalidSetting;
-use crate::setting::positive_mm;
+use crate::setting::{MAX_BAND_MM, MAX_THICKNESS_MM, MIN_BAND_MM, within};
 use serde::{Deserialize, Serialize};
 
 /// The raster brush's settings, with the one set of defaults
@@ -53,21 +53,57 @@ impl Default for Settings {
 /// no piece could slice it without cutting through it.
 pub const MAX_SCALE: f64 = 1.0;
 
+/// The smallest scale: a pattern a twentieth of its band is a speck.
+pub const MIN_SCALE: f64 = 0.05;
+
+/// The shortest piece along the curve, mm: a tenth of a millimetre, finer
+/// than any nozzle or laser spot, and a floor under the pieces' count (a
+/// 10 m curve makes 100,000 at most).
+pub const MIN_STEP_MM: f64 = 0.1;
+
+/// The largest variety weight: at 10 already the fit hardly counts.
+pub const MAX_VARIETY: f64 = 100.0;
+
 impl Settings {
     /// Checks every number is in range.
     pub fn validate(&self) -> Result<(), InvalidSetting> {
-        positive_mm("the band", self.band_mm)?;
-        positive_mm("the step", self.step_mm)?;
-        positive_mm("the thickness", self.thickness_mm)?;
-        if !(self.variety.is_finite() && self.variety >= 0.0) {
-            return Err(InvalidSetting(format!("variety must be zero or more, not {}", self.variety)));
-        }
-        if !(self.scale.is_finite() && self.scale > 0.0 && self.scale <= MAX_SCALE) {
-            return Err(InvalidSetting(format!(
-                "the scale (the pattern's height as a fraction of the band) must be above 0 and at most {MAX_SCALE}, not {}",
-                self.scale
-            )));
-        }
+        within(
+            "band_mm",
+            "the band",
+            self.band_mm,
+            MIN_BAND_MM..=MAX_BAND_MM,
+            false,
+            " mm",
+            "wider than any printer's bed",
+        )?;
+        within(
+            "step_mm",
+            "the step",
+            self.step_mm,
+            MIN_STEP_MM..=MAX_BAND_MM,
+            false,
+            " mm",
+            "wider than any printer's bed",
+        )?;
+        within(
+            "thickness_mm",
+            "the thickness",
+            self.thickness_mm,
+            0.0..=MAX_THICKNESS_MM,
+            true,
+            " mm",
+            "taller than any printer builds",
+        )?;
+        within("variety", "variety", self.variety, 0.0..=MAX_VARIETY, false, "", "variety outweighing the fit")?;
+        within(
+            "scale",
+            "the scale (the pattern's height as a fraction of the band)",
+            self.scale,
+            MIN_SCALE..=MAX_SCALE,
+            false,
+            "",
+            "a pattern taller than its band",
+        )?;
         Ok(())
     }
 }

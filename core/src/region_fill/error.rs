@@ -30,7 +30,9 @@ pub enum FillError {
     #[error(transparent)]
     Sample(#[from] SampleError),
     /// The region spec is not one this program knows.
-    #[error("'{0}' is not a region: use rect:WIDTHxHEIGHT, circle:RADIUS (mm) or svg:FILE.svg")]
+    #[error(
+        "'{0}' is not a region: use rect:WIDTHxHEIGHT, circle:RADIUS (mm, up to 10000) or svg:FILE.svg (within 10000 mm of its origin)"
+    )]
     BadRegionSpec(String),
     /// The drawing a region or exemplar was to come from could not be read.
     #[error(transparent)]
@@ -102,6 +104,9 @@ pub enum FillError {
     /// Stopped on request.
     #[error(transparent)]
     Cancelled(#[from] Cancelled),
+    /// A fault in Tracery itself, caught in a worker.
+    #[error(transparent)]
+    Internal(#[from] crate::control::Internal),
 }
 
 impl MaybeCancelled for FillError {

@@ -8,6 +8,7 @@ use glam::DVec2;
 use super::{FillError, Settings};
 use crate::curve::svg_shapes;
 use crate::geom::{FillRule, Rect, Region, arc_step, disc, offset, resolve_contours, ring_crossing};
+use crate::setting::WORLD_EXTENT_MM;
 
 /// Largest distance between a region's curved edges and their chords, mm.
 pub const REGION_TOLERANCE_MM: f64 = 0.01;
@@ -28,10 +29,14 @@ pub const MAX_FILL_SAMPLES: usize = 100_000;
 /// assert!(parse_region("square:3").is_err());
 /// assert!(parse_region("rect:0x4").is_err());
 /// ```
+/// Sizes and an SVG's outlines must lie within [`WORLD_EXTENT_MM`].
 pub fn parse_region(spec: &str) -> Result<Region, FillError> {
     let bad = || FillError::BadRegionSpec(spec.to_string());
     let (kind, rest) = spec.split_once(':').ok_or_else(bad)?;
-    let number = |s: &str| s.trim().parse::<f64>().ok().filter(|x| x.is_finite() && *x > 0.0).ok_or_else(bad);
+    // Sizes stop at the table's edge before anything is allocated from them.
+    let number = |s: &str| {
+        s.trim().parse::<f64>().ok().filter(|x| x.is_finite() && *x > 0.0 && *x <= WORLD_EXTENT_MM).ok_or_else(bad)
+    };
     match kind {
         "rect" => {
             let (w, h) = rest.split_once(['x', 'X']).ok_or_else(bad)?;
@@ -51,6 +56,10 @@ pub fn parse_region(spec: &str) -> Result<Region, FillError> {
                 .filter(|s| s.closed || s.filled)
                 .map(|s| s.points_mm)
                 .collect();
+            let reach_mm = outlines.iter().flatten().map(|p| p.x.abs().max(p.y.abs())).fold(0.0, f64::max);
+            if reach_mm.is_nan() || reach_mm > WORLD_EXTENT_MM {
+                return Err(bad());
+            }
             region_from_outlines(&outlines)
         }
         _ => Err(bad()),

@@ -2,7 +2,7 @@
 //! for the document, the command line and the app.
 
 pub use crate::setting::InvalidSetting;
-use crate::setting::positive_mm;
+use crate::setting::{MAX_BAND_MM, MAX_THICKNESS_MM, within};
 use serde::{Deserialize, Serialize};
 
 /// Region fill's settings, with the one set of defaults
@@ -66,6 +66,9 @@ impl Default for Settings {
 /// samples of a pattern no printer or pen could show.
 pub const MIN_DELTA_MM: f64 = 0.2;
 
+/// The widest stroke and frame, mm: wider than a hand.
+pub const MAX_STROKE_WIDTH_MM: f64 = 100.0;
+
 /// The smallest exemplar scale: a drawing in points shrunk to a hundredth.
 pub const MIN_EXEMPLAR_SCALE: f64 = 0.01;
 
@@ -78,37 +81,65 @@ pub const MAX_ITERATIONS: usize = 50;
 impl Settings {
     /// Checks every number is in range.
     pub fn validate(&self) -> Result<(), InvalidSetting> {
-        positive_mm("the sample spacing", self.delta_mm)?;
-        positive_mm("the stroke width", self.stroke_width_mm)?;
-        positive_mm("the thickness", self.thickness_mm)?;
-        if self.delta_mm < MIN_DELTA_MM {
-            return Err(InvalidSetting(format!(
-                "the sample spacing must be at least {MIN_DELTA_MM} mm, not {}",
-                self.delta_mm
-            )));
-        }
-        if !(self.frame_mm.is_finite() && self.frame_mm >= 0.0) {
-            return Err(InvalidSetting(format!("the frame must be 0 (none) or a width in mm, not {}", self.frame_mm)));
-        }
-        if !(self.radius_spacings.is_finite() && (1.5..=8.0).contains(&self.radius_spacings)) {
-            return Err(InvalidSetting(format!(
-                "the neighbourhood radius must be between 1.5 and 8 spacings, not {}",
-                self.radius_spacings
-            )));
-        }
-        if !(self.exemplar_scale.is_finite()
-            && (MIN_EXEMPLAR_SCALE..=MAX_EXEMPLAR_SCALE).contains(&self.exemplar_scale))
-        {
-            return Err(InvalidSetting(format!(
-                "the exemplar scale must be between {MIN_EXEMPLAR_SCALE} and {MAX_EXEMPLAR_SCALE}, not {}",
-                self.exemplar_scale
-            )));
-        }
+        within(
+            "delta_mm",
+            "the sample spacing",
+            self.delta_mm,
+            MIN_DELTA_MM..=MAX_BAND_MM,
+            false,
+            " mm",
+            "wider than any printer's bed",
+        )?;
+        within(
+            "stroke_width_mm",
+            "the stroke width",
+            self.stroke_width_mm,
+            0.0..=MAX_STROKE_WIDTH_MM,
+            true,
+            " mm",
+            "a stroke wider than a hand",
+        )?;
+        within(
+            "thickness_mm",
+            "the thickness",
+            self.thickness_mm,
+            0.0..=MAX_THICKNESS_MM,
+            true,
+            " mm",
+            "taller than any printer builds",
+        )?;
+        within(
+            "frame_mm",
+            "the frame",
+            self.frame_mm,
+            0.0..=MAX_STROKE_WIDTH_MM,
+            false,
+            " mm",
+            "a frame wider than a hand",
+        )?;
+        within(
+            "radius_spacings",
+            "the neighbourhood radius",
+            self.radius_spacings,
+            1.5..=8.0,
+            false,
+            " spacings",
+            "a neighbourhood too wide to match",
+        )?;
+        within(
+            "exemplar_scale",
+            "the exemplar scale",
+            self.exemplar_scale,
+            MIN_EXEMPLAR_SCALE..=MAX_EXEMPLAR_SCALE,
+            false,
+            "",
+            "an exemplar far larger than any region",
+        )?;
         if !(1..=MAX_ITERATIONS).contains(&self.iterations) {
-            return Err(InvalidSetting(format!(
-                "the steps per level must be between 1 and {MAX_ITERATIONS}, not {}",
-                self.iterations
-            )));
+            return Err(InvalidSetting::new(
+                "iterations",
+                format!("the steps per level must be between 1 and {MAX_ITERATIONS}, not {}", self.iterations),
+            ));
         }
         Ok(())
     }

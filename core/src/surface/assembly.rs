@@ -71,6 +71,9 @@ pub enum AssemblyError {
     /// A boolean failed.
     #[error(transparent)]
     Boolean(#[from] BooleanError),
+    /// A fault in Tracery itself, caught in a worker.
+    #[error(transparent)]
+    Internal(#[from] crate::control::Internal),
 }
 
 /// Bodies smaller than this after the booleans are slivers they left

@@ -6,6 +6,7 @@ use serde::{Deserialize, Serialize};
 
 use super::{Chart, ChartError, Frames, SurfaceCurve, SurfaceMesh, TraceError, trace};
 use crate::report::{Timings, Warning};
+use crate::setting::{InvalidSetting, MAX_BAND_MM, on_the_table, within};
 
 /// How a curve is drawn on a surface: one settings struct for the command
 /// line and the app.
@@ -110,13 +111,20 @@ pub fn object_holds_model(outputs: impl IntoIterator<Item = SurfaceOutput>, with
 /// further is reported.
 pub const SNAP_REPORT_MM: f64 = 1e-3;
 
+/// The finest curve step, mm: finer than any nozzle.
+pub const MIN_STEP_MM: f64 = 0.05;
+
+/// The thickest wall a pattern is carved from, mm: thicker than the models
+/// a band is laid on, which are a hand's size to a vase's.
+pub const MAX_WALL_MM: f64 = 50.0;
+
 /// Why a curve could not be drawn on a surface.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
 #[non_exhaustive]
 pub enum DrawnError {
     /// Bad points or settings.
-    #[error("{0}")]
-    Setting(String),
+    #[error(transparent)]
+    Setting(#[from] InvalidSetting),
     /// No chart.
     #[error(transparent)]
     Chart(#[from] ChartError),
@@ -135,14 +143,21 @@ impl SurfaceSettings {
             .map(|(k, p)| {
                 let numbers: Vec<f64> =
                     p.split(',').map(|c| c.trim().parse::<f64>()).collect::<Result<_, _>>().map_err(|_| {
-                        DrawnError::Setting(format!("point {} ({p}) is not three numbers x,y,z", k + 1))
+                        InvalidSetting::new("points_mm", format!("point {} ({p}) is not three numbers x,y,z", k + 1))
                     })?;
                 match numbers[..] {
-                    [x, y, z] if [x, y, z].iter().all(|c| c.is_finite()) => Ok([x, y, z]),
-                    _ => Err(DrawnError::Setting(format!("point {} ({p}) is not three numbers x,y,z", k + 1))),
+                    [x, y, z] => {
+                        on_the_table("points_mm", &format!("point {}", k + 1), &[x, y, z])?;
+                        Ok([x, y, z])
+                    }
+                    _ => Err(InvalidSetting::new(
+                        "points_mm",
+                        format!("point {} ({p}) is not three numbers x,y,z", k + 1),
+                    )),
                 }
             })
-            .collect()
+            .collect::<Result<_, InvalidSetting>>()
+            .map_err(DrawnError::from)
     }
 
     /// These settings as a part of an object that does or does not hold
@@ -164,24 +179,46 @@ impl SurfaceSettings {
     pub fn validate(&self) -> Result<(), DrawnError> {
         let least = if self.closed { 3 } else { 2 };
         if self.points_mm.len() < least {
-            return Err(DrawnError::Setting(format!(
-                "{} curve needs at least {least} points; {} given",
-                if self.closed { "a closed" } else { "an open" },
-                self.points_mm.len()
-            )));
+            return Err(InvalidSetting::new(
+                "points_mm",
+                format!(
+                    "{} curve needs at least {least} points; {} given",
+                    if self.closed { "a closed" } else { "an open" },
+                    self.points_mm.len()
+                ),
+            )
+            .into());
         }
-        if self.points_mm.iter().flatten().any(|c| !c.is_finite()) {
-            return Err(DrawnError::Setting("a point is not a finite number".into()));
+        for (k, point) in self.points_mm.iter().enumerate() {
+            on_the_table("points_mm", &format!("point {}", k + 1), point)?;
         }
-        if !(self.twist_deg.is_finite() && self.twist_deg.abs() <= 90.0) {
-            return Err(DrawnError::Setting(format!("twist {} is not between -90 and 90 degrees", self.twist_deg)));
-        }
-        if !(self.step_mm.is_finite() && self.step_mm > 0.0) {
-            return Err(DrawnError::Setting(format!("curve step {} mm is not positive", self.step_mm)));
-        }
-        if !(self.wall_mm.is_finite() && self.wall_mm > 0.0) {
-            return Err(DrawnError::Setting(format!("wall {} mm is not positive", self.wall_mm)));
-        }
+        within(
+            "twist_deg",
+            "the twist",
+            self.twist_deg.abs(),
+            0.0..=90.0,
+            false,
+            " degrees either way",
+            "a band standing past upright",
+        )?;
+        within(
+            "step_mm",
+            "the curve step",
+            self.step_mm,
+            MIN_STEP_MM..=MAX_BAND_MM,
+            false,
+            " mm",
+            "wider than any printer's bed",
+        )?;
+        within(
+            "wall_mm",
+            "the wall",
+            self.wall_mm,
+            0.0..=MAX_WALL_MM,
+            true,
+            " mm",
+            "thicker than the models a pattern is carved from",
+        )?;
         Ok(())
     }
 }

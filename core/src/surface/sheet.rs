@@ -14,7 +14,7 @@ use std::f64::consts::TAU;
 use glam::{DVec2, DVec3};
 use serde::{Deserialize, Serialize};
 
-use super::{Shade, ShadeError};
+use super::{Shade, ShadeError, shade::MAX_SHADE_MM};
 use crate::geom::{
     PatternTopology, Polygon, Rect, Region, clip_to_rect, count_topology, intersection, refine_mapped, ring_contains,
     union,
@@ -92,7 +92,13 @@ impl ShadeSettings {
     pub fn rows(&self, band_mm: f64) -> Result<Vec<RowPlace>, ShadeError> {
         self.shade.validate()?;
         let non_negative = |what: &'static str, value: f64| {
-            if value.is_finite() && value >= 0.0 { Ok(()) } else { Err(ShadeError::Size { what, value }) }
+            if !(value.is_finite() && value >= 0.0) {
+                return Err(ShadeError::Size { what, value });
+            }
+            if value > MAX_SHADE_MM {
+                return Err(ShadeError::TooLarge { what, value, limit: MAX_SHADE_MM });
+            }
+            Ok(())
         };
         non_negative("rim", self.rim_mm)?;
         non_negative("row overlap", self.row_overlap_mm)?;

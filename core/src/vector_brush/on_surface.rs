@@ -36,6 +36,9 @@ pub enum SurfaceSynthesisError {
     /// The pattern could not be united with the model, or cut out of it.
     #[error(transparent)]
     Assembly(#[from] AssemblyError),
+    /// A fault in Tracery itself, caught in a worker.
+    #[error(transparent)]
+    Internal(#[from] crate::control::Internal),
 }
 
 impl MaybeCancelled for SurfaceSynthesisError {

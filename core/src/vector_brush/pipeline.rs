@@ -53,6 +53,9 @@ pub enum SynthesisError {
         /// The band asked for, mm.
         band_mm: f64,
     },
+    /// A fault in Tracery itself, caught in a worker.
+    #[error(transparent)]
+    Internal(#[from] crate::control::Internal),
 }
 
 impl From<ExemplarError> for SynthesisError {
@@ -251,7 +254,7 @@ pub(crate) fn analyse(
     drawn: Option<Region>,
 ) -> Result<(PieceSet, Timings), SynthesisError> {
     if !(scale.is_finite() && scale > 0.0) {
-        return Err(InvalidSetting(format!("the scale {scale} mm per unit must be positive")).into());
+        return Err(InvalidSetting::new("scale", format!("the scale {scale} mm per unit must be positive")).into());
     }
     let mut timings = Timings::default();
     let mut slicing = SliceOptions::default();

@@ -8,7 +8,7 @@ use serde::{Deserialize, Serialize};
 use super::{CORNER_RADIUS, SliceOptions, SlicingMode, Target};
 use crate::curve::Curve;
 pub use crate::setting::InvalidSetting;
-use crate::setting::{positive, positive_mm};
+use crate::setting::{MAX_BAND_MM, MAX_THICKNESS_MM, MIN_BAND_MM, within};
 
 /// The vector brush's settings, with the one documented set of defaults
 /// (`docs/vector-brush.md` lists them).
@@ -67,6 +67,16 @@ pub struct Settings {
     pub flip: bool,
 }
 
+/// The smallest exemplar scale: at a twentieth of the band the pieces are
+/// specks, and the curve would need millions of them.
+pub const MIN_SCALE: f64 = 0.05;
+
+/// The largest exemplar scale (relative to fitting its height to the band).
+pub const MAX_SCALE: f64 = 10.0;
+
+/// The largest variety weight: at 10 already the fit hardly counts.
+pub const MAX_VARIETY: f64 = 100.0;
+
 /// How many alternatives the gallery offers (the best one included).
 pub const ALTERNATIVES: u32 = 6;
 
@@ -94,33 +104,66 @@ impl Default for Settings {
 impl Settings {
     /// Checks every number is in range.
     pub fn validate(&self) -> Result<(), InvalidSetting> {
-        positive_mm("the band", self.band_mm)?;
-        positive("the scale", self.scale, "")?;
-        positive_mm("the thickness", self.thickness_mm)?;
-        if !(self.variety.is_finite() && self.variety >= 0.0) {
-            return Err(InvalidSetting(format!("variety must be zero or more, not {}", self.variety)));
-        }
-        if !(self.min_portal_mm.is_finite() && self.min_portal_mm >= 0.0) {
-            return Err(InvalidSetting(format!(
-                "the minimum portal must be zero or more millimetres, not {}",
-                self.min_portal_mm
-            )));
-        }
-        if !(self.event_grouping.is_finite() && self.event_grouping >= 0.0) {
-            return Err(InvalidSetting(format!("event grouping must be zero or more, not {}", self.event_grouping)));
-        }
-        if !(self.corner_radius_mm.is_finite() && self.corner_radius_mm >= 0.0) {
-            return Err(InvalidSetting(format!(
-                "the corner radius must be zero or more millimetres, not {}",
-                self.corner_radius_mm
-            )));
-        }
+        within(
+            "band_mm",
+            "the band",
+            self.band_mm,
+            MIN_BAND_MM..=MAX_BAND_MM,
+            false,
+            " mm",
+            "wider than any printer's bed",
+        )?;
+        within(
+            "scale",
+            "the scale",
+            self.scale,
+            MIN_SCALE..=MAX_SCALE,
+            false,
+            "",
+            "an exemplar many bands tall, cut to one band",
+        )?;
+        within(
+            "thickness_mm",
+            "the thickness",
+            self.thickness_mm,
+            0.0..=MAX_THICKNESS_MM,
+            true,
+            " mm",
+            "taller than any printer builds",
+        )?;
+        within("variety", "variety", self.variety, 0.0..=MAX_VARIETY, false, "", "variety outweighing the fit")?;
+        within(
+            "min_portal_mm",
+            "the minimum portal",
+            self.min_portal_mm,
+            0.0..=self.band_mm.max(0.0),
+            false,
+            " mm (the band)",
+            "wider than the band, which would drop every cut",
+        )?;
+        within(
+            "event_grouping",
+            "event grouping",
+            self.event_grouping,
+            0.0..=1.0,
+            false,
+            "",
+            "grouping across the band",
+        )?;
+        within(
+            "corner_radius_mm",
+            "the corner radius",
+            self.corner_radius_mm,
+            0.0..=MAX_BAND_MM,
+            false,
+            " mm",
+            "wider than any printer's bed",
+        )?;
         if self.alternative >= ALTERNATIVES {
-            return Err(InvalidSetting(format!(
-                "the alternative must be between 0 and {}, not {}",
-                ALTERNATIVES - 1,
-                self.alternative
-            )));
+            return Err(InvalidSetting::new(
+                "alternative",
+                format!("the alternative must be between 0 and {}, not {}", ALTERNATIVES - 1, self.alternative),
+            ));
         }
         Ok(())
     }

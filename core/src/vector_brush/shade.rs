@@ -45,6 +45,9 @@ pub enum ShadeSynthesisError {
     /// The rows could not be made solid.
     #[error(transparent)]
     Wrap(#[from] WrapError),
+    /// A fault in Tracery itself, caught in a worker.
+    #[error(transparent)]
+    Internal(#[from] crate::control::Internal),
 }
 
 impl MaybeCancelled for ShadeSynthesisError {

@@ -379,7 +379,10 @@ fn validate(set: &PieceSet, options: &SolveOptions) -> Result<(), SolveError> {
         || options.target_length / grid.quantum > 5e7
         || widest / grid.quantum > 5e6
     {
-        return invalid("the length quantum is too small for this curve".into());
+        return invalid(
+            "the curve is too long for pieces this small: widen the band, raise the scale, or draw a shorter curve"
+                .into(),
+        );
     }
     Ok(())
 }
