@@ -66,6 +66,11 @@ const REFUSALS: &[(&[&str], i32, &[&str])] = &[
         &["--wall", "50 mm"],
     ),
     (&["raster", "--exemplar", "rope", "--along", "circle:20", "--thickness", "1e12"], 1, &["--thickness"]),
+    (
+        &["synth", "--exemplar", "lace", "--along", "circle:20", "--slicing", "uniform:99999999999999"],
+        1,
+        &["--slicing", "1 to 256"],
+    ),
     // A negative number is a value, not a flag.
     (&["shade", "--exemplar", "lace", "--cylinder", "-1,60"], 1, &["radius", "-1"]),
     // Usage errors exit 2.

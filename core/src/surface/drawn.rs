@@ -195,10 +195,10 @@ impl SurfaceSettings {
         within(
             "twist_deg",
             "the twist",
-            self.twist_deg.abs(),
-            0.0..=90.0,
+            self.twist_deg,
+            -90.0..=90.0,
             false,
-            " degrees either way",
+            " degrees",
             "a band standing past upright",
         )?;
         within(

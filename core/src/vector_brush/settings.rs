@@ -77,6 +77,10 @@ pub const MAX_SCALE: f64 = 10.0;
 /// The largest variety weight: at 10 already the fit hardly counts.
 pub const MAX_VARIETY: f64 = 100.0;
 
+/// The most cut lines uniform slicing takes: more cuts pieces thinner than
+/// a nozzle from any exemplar.
+pub const MAX_UNIFORM_CUTS: usize = 256;
+
 /// How many alternatives the gallery offers (the best one included).
 pub const ALTERNATIVES: u32 = 6;
 
@@ -159,6 +163,17 @@ impl Settings {
             " mm",
             "wider than any printer's bed",
         )?;
+        if self.components == Target::Exactly(0) {
+            return Err(InvalidSetting::new("components", "a pattern has at least 1 component, not 0"));
+        }
+        if let SlicingMode::Uniform { cuts } = self.slicing
+            && !(1..=MAX_UNIFORM_CUTS).contains(&cuts)
+        {
+            return Err(InvalidSetting::new(
+                "slicing",
+                format!("uniform slicing takes 1 to {MAX_UNIFORM_CUTS} cut lines, not {cuts}"),
+            ));
+        }
         if self.alternative >= ALTERNATIVES {
             return Err(InvalidSetting::new(
                 "alternative",
