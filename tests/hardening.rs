@@ -71,6 +71,9 @@ const REFUSALS: &[(&[&str], i32, &[&str])] = &[
         1,
         &["--slicing", "1 to 256"],
     ),
+    // Found by fuzzing: a region kilometres across was cut into a polygon of
+    // ten million sides before any check.
+    (&["fill", "--exemplar", "vine", "--region", "circle:1e12"], 1, &["is not a region", "10000"]),
     // A negative number is a value, not a flag.
     (&["shade", "--exemplar", "lace", "--cylinder", "-1,60"], 1, &["radius", "-1"]),
     // Usage errors exit 2.
@@ -133,6 +136,60 @@ fn hostile_files_are_refused_in_words_a_person_reads() {
         assert!(err.contains("compressed SVG") && err.contains("plain SVG"), "{args:?}: {err}");
     }
     assert!(!dir.join("o.svg").exists());
+
+    // Found by fuzzing: a drawing kilometres across, flattened at a fixed
+    // tolerance, made billions of points.
+    let huge = dir.join("huge.svg");
+    std::fs::write(&huge, r#"<svg xmlns="http://www.w3.org/2000/svg" width="10" height="10"><circle r="1e9"/></svg>"#)
+        .unwrap();
+    let region = format!("svg:{}", huge.display());
+    let args = ["fill", "--exemplar", "vine", "--region", &region];
+    let out = tracery().args(args).arg("--svg").arg(dir.join("o.svg")).output().unwrap();
+    assert_eq!(out.status.code(), Some(1));
+    let err = check_one_line(&args, &out);
+    assert!(err.contains("is not a region") || err.contains("units"), "{err}");
+}
+
+/// CRC-32 (PNG's) of `bytes`.
+fn crc32(bytes: &[u8]) -> u32 {
+    let mut crc = !0u32;
+    for &b in bytes {
+        crc ^= u32::from(b);
+        for _ in 0..8 {
+            crc = if crc & 1 == 1 { (crc >> 1) ^ 0xEDB8_8320 } else { crc >> 1 };
+        }
+    }
+    !crc
+}
+
+/// A PNG's signature and header for a `width` × `height` RGBA picture, and
+/// its end: a valid picture's start, whose pixels the decoder never reaches.
+fn png_header(width: u32, height: u32) -> Vec<u8> {
+    let chunk = |kind: &[u8], data: &[u8]| {
+        let mut c = (data.len() as u32).to_be_bytes().to_vec();
+        let body = [kind, data].concat();
+        c.extend_from_slice(&body);
+        c.extend_from_slice(&crc32(&body).to_be_bytes());
+        c
+    };
+    let ihdr = [width.to_be_bytes().as_slice(), &height.to_be_bytes(), &[8, 6, 0, 0, 0]].concat();
+    // A zlib stream of nothing: the header is read up to the first IDAT.
+    let idat = chunk(b"IDAT", &[0x78, 0x9c, 0x03, 0x00, 0x00, 0x00, 0x00, 0x01]);
+    [b"\x89PNG\r\n\x1a\n".as_slice(), &chunk(b"IHDR", &ihdr), &idat, &chunk(b"IEND", &[])].concat()
+}
+
+#[test]
+fn a_large_picture_is_told_too_large_not_damaged() {
+    let dir = tempdir("large-png");
+    // 12000 × 12000 RGBA is 576 MB decoded, past the decoder's memory
+    // limit: it was refused as "not a PNG picture (Memory limit exceeded)".
+    let png = dir.join("large.png");
+    std::fs::write(&png, png_header(12_000, 12_000)).unwrap();
+    let args = ["raster", "--exemplar", png.to_str().unwrap(), "--along", "circle:20"];
+    let out = tracery().args(args).arg("--stl").arg(dir.join("o.stl")).output().unwrap();
+    assert_eq!(out.status.code(), Some(1));
+    let err = check_one_line(&args, &out);
+    assert!(err.contains("12000 x 12000 pixels") && err.contains("scale it down"), "{err}");
 }
 
 #[test]

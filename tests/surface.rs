@@ -255,13 +255,19 @@ fn bad_surfaces_fail_with_one_line_and_no_file() {
     for (args, says) in [
         (vec!["--mesh", "teapot", "--points", "0,0,0;1,1,1"], "no mesh file or built-in base named 'teapot'"),
         (vec!["--mesh", "egg", "--points", "0,0,0"], "at least 2 points"),
-        (vec!["--mesh", "egg", "--points", "0,0,0;1,1,1;2,2,2", "--closed", "--twist", "200"], "--twist: the twist must be at most 90 degrees, not 200"),
+        (
+            vec!["--mesh", "egg", "--points", "0,0,0;1,1,1;2,2,2", "--closed", "--twist", "200"],
+            "--twist: the twist must be at most 90 degrees, not 200",
+        ),
         (vec!["--mesh", "egg", "--points", "1,2;3,4,5"], "point 1 (1,2) is not three numbers"),
         (vec!["--mesh", &crowded, "--points", "0,0,0;1,0,0"], "shared by more than two triangles"),
         (vec!["--mesh", &text, "--points", "0,0,0;1,0,0"], "is not a valid STL file"),
         (vec!["--mesh", "egg", "--points", "0,0,0;1,1,1", "--along", "line:10"], "not --along"),
         (vec!["--mesh", "vase", "--points", "30,0,25;0,30,25", "--mode", "carve", "--wall", "6"], "for a 6 mm wall"),
-        (vec!["--mesh", "egg", "--points", "21,0,20;0,-19,40", "--mode", "carve", "--wall", "0"], "--wall: the wall must be above 0 mm, not 0"),
+        (
+            vec!["--mesh", "egg", "--points", "21,0,20;0,-19,40", "--mode", "carve", "--wall", "0"],
+            "--wall: the wall must be above 0 mm, not 0",
+        ),
     ] {
         let out = tracery().args(["surface", "--exemplar", "lace", "--stl"]).arg(&stl).args(&args).output().unwrap();
         let stderr = String::from_utf8_lossy(&out.stderr);
