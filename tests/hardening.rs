@@ -288,20 +288,21 @@ fn a_run_killed_at_any_moment_leaves_the_old_file_or_the_whole_new_one() {
 
 #[test]
 fn ctrl_c_cancels_cleanly_and_leaves_no_file() {
-    let dir = tempdir("ctrl-c");
-    let stl = dir.join("o.stl");
-    // A quilt over the vase runs for minutes.
-    let child = tracery()
-        .args(["quilt", "--swatch", "weave", "--base", "vase", "--stl"])
-        .arg(&stl)
-        .stderr(Stdio::piped())
-        .spawn()
-        .unwrap();
-    std::thread::sleep(Duration::from_secs(2));
-    let status = std::process::Command::new("kill").args(["-INT", &child.id().to_string()]).status().unwrap();
-    assert!(status.success());
-    let out = child.wait_with_output().unwrap();
-    assert_eq!(out.status.code(), Some(130), "{}", String::from_utf8_lossy(&out.stderr));
-    assert!(check_one_line(&[], &out).contains("cancelled"));
-    assert_eq!(std::fs::read_dir(&*dir).unwrap().count(), 0, "Ctrl+C left a file");
+    // A quilt over the vase runs for minutes, checking for Ctrl+C often; a
+    // long narrow synth spends seconds in stages that check seldom.
+    let runs: [&[&str]; 2] = [
+        &["quilt", "--swatch", "weave", "--base", "vase"],
+        &["synth", "--exemplar", "lace", "--along", "line:9000", "--band", "0.5"],
+    ];
+    for args in runs {
+        let dir = tempdir("ctrl-c");
+        let child = tracery().args(args).arg("--stl").arg(dir.join("o.stl")).stderr(Stdio::piped()).spawn().unwrap();
+        std::thread::sleep(Duration::from_secs(2));
+        let status = std::process::Command::new("kill").args(["-INT", &child.id().to_string()]).status().unwrap();
+        assert!(status.success());
+        let out = child.wait_with_output().unwrap();
+        assert_eq!(out.status.code(), Some(130), "{args:?}: {}", String::from_utf8_lossy(&out.stderr));
+        assert!(check_one_line(args, &out).contains("cancelled"));
+        assert_eq!(std::fs::read_dir(&*dir).unwrap().count(), 0, "{args:?}: Ctrl+C left a file");
+    }
 }

@@ -32,10 +32,7 @@ fn main() -> ExitCode {
         // The reader stopped reading (`tracery list | head -1`): nothing
         // more to say to it.
         Err(e) if is_broken_pipe(&e) => ExitCode::SUCCESS,
-        Err(e) if e.is::<cli::Interrupted>() => {
-            eprintln!("tracery: {e}");
-            ExitCode::from(130)
-        }
+        Err(e) if e.is::<cli::Interrupted>() => cli::progress::exit_cancelled(),
         Err(e) => {
             let message = one_line(&e);
             eprintln!("tracery: {message}");

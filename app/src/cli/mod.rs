@@ -5,7 +5,7 @@
 mod fill;
 mod flags;
 mod output;
-mod progress;
+pub mod progress;
 mod quilt;
 mod raster;
 mod shade;

@@ -306,6 +306,7 @@ pub fn write_outputs(
     if let Some(path) = &args.report {
         files.push((path, json.as_bytes()));
     }
+    super::progress::writing(true);
     if progress.is_cancelled() {
         bail!(tracery_core::control::Cancelled);
     }

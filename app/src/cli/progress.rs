@@ -12,6 +12,30 @@ use tracery_core::control::Control;
 /// Set by Ctrl+C; every stage checks it through [`Control`].
 static CANCEL: AtomicBool = AtomicBool::new(false);
 
+/// Set while the outputs are being put in place: Ctrl+C then lets them finish.
+static WRITING: AtomicBool = AtomicBool::new(false);
+
+/// Set once "cancelled" has been said, so that it is said once.
+static SAID: AtomicBool = AtomicBool::new(false);
+
+/// How long a stage has to notice Ctrl+C before the process ends without
+/// it: several stages (meshing, the print check) check seldom, and nothing
+/// has been written while the work runs, so ending is safe.
+const CANCEL_GRACE: Duration = Duration::from_millis(300);
+
+/// Says the run was cancelled, once, and ends the process with 130.
+pub fn exit_cancelled() -> ! {
+    if !SAID.swap(true, Ordering::SeqCst) {
+        eprintln!("tracery: {}", super::Interrupted);
+    }
+    std::process::exit(130)
+}
+
+/// Marks the outputs being put in place (see [`WRITING`]).
+pub fn writing(on: bool) {
+    WRITING.store(on, Ordering::SeqCst);
+}
+
 /// Ticks on the bar: a fraction done is shown in thousandths.
 const BAR_TICKS: u64 = 1000;
 
@@ -29,10 +53,14 @@ impl Progress {
         // A second handler cannot be set (tests run several commands in one
         // process); the first one sets the same flag.
         let _ = ctrlc::set_handler(|| {
-            if CANCEL.swap(true, Ordering::Relaxed) {
+            if CANCEL.swap(true, Ordering::SeqCst) {
                 // Asked twice: stop at once. Outputs are written nameless
                 // until whole, so none is left half written.
-                std::process::exit(130);
+                exit_cancelled();
+            }
+            std::thread::sleep(CANCEL_GRACE);
+            if !WRITING.load(Ordering::SeqCst) {
+                exit_cancelled();
             }
         });
         let draw = !quiet && std::io::stderr().is_terminal();
