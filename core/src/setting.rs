@@ -23,6 +23,9 @@ pub const MIN_BAND_MM: f64 = 0.5;
 /// The widest band, mm: a metre, wider than any printer's bed.
 pub const MAX_BAND_MM: f64 = 1_000.0;
 
+/// The largest variety weight: at 10 already the fit hardly counts.
+pub const MAX_VARIETY: f64 = 100.0;
+
 /// A setting out of range, in words a person understands.
 #[derive(Clone, Debug, PartialEq, thiserror::Error)]
 #[error("{message}")]
@@ -131,4 +134,19 @@ pub fn on_the_table(field: &'static str, what: &str, point: &[f64]) -> Result<()
             shown.join(", ")
         ),
     ))
+}
+
+/// The printed thickness, `thickness_mm`: above 0, at most [`MAX_THICKNESS_MM`].
+pub fn thickness(x: f64) -> Result<(), InvalidSetting> {
+    within("thickness_mm", "the thickness", x, 0.0..=MAX_THICKNESS_MM, true, " mm", "taller than any printer builds")
+}
+
+/// A band's width, `band_mm`: [`MIN_BAND_MM`] to [`MAX_BAND_MM`].
+pub fn band(x: f64) -> Result<(), InvalidSetting> {
+    within("band_mm", "the band", x, MIN_BAND_MM..=MAX_BAND_MM, false, " mm", "wider than any printer's bed")
+}
+
+/// The variety weight, `variety`: 0 to [`MAX_VARIETY`].
+pub fn variety(x: f64) -> Result<(), InvalidSetting> {
+    within("variety", "variety", x, 0.0..=MAX_VARIETY, false, "", "variety outweighing the fit")
 }

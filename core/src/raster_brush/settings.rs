@@ -2,7 +2,7 @@
 //! once for the document, the command line and the app.
 
 pub use crate::setting::InvalidSetting;
-use crate::setting::{MAX_BAND_MM, MAX_THICKNESS_MM, MIN_BAND_MM, within};
+use crate::setting::{MAX_BAND_MM, band, thickness, variety, within};
 use serde::{Deserialize, Serialize};
 
 /// The raster brush's settings, with the one set of defaults
@@ -61,21 +61,10 @@ pub const MIN_SCALE: f64 = 0.05;
 /// 10 m curve makes 100,000 at most).
 pub const MIN_STEP_MM: f64 = 0.1;
 
-/// The largest variety weight: at 10 already the fit hardly counts.
-pub const MAX_VARIETY: f64 = 100.0;
-
 impl Settings {
     /// Checks every number is in range.
     pub fn validate(&self) -> Result<(), InvalidSetting> {
-        within(
-            "band_mm",
-            "the band",
-            self.band_mm,
-            MIN_BAND_MM..=MAX_BAND_MM,
-            false,
-            " mm",
-            "wider than any printer's bed",
-        )?;
+        band(self.band_mm)?;
         within(
             "step_mm",
             "the step",
@@ -85,16 +74,8 @@ impl Settings {
             " mm",
             "wider than any printer's bed",
         )?;
-        within(
-            "thickness_mm",
-            "the thickness",
-            self.thickness_mm,
-            0.0..=MAX_THICKNESS_MM,
-            true,
-            " mm",
-            "taller than any printer builds",
-        )?;
-        within("variety", "variety", self.variety, 0.0..=MAX_VARIETY, false, "", "variety outweighing the fit")?;
+        thickness(self.thickness_mm)?;
+        variety(self.variety)?;
         within(
             "scale",
             "the scale (the pattern's height as a fraction of the band)",

@@ -2,7 +2,7 @@
 //! for the document, the command line and the app.
 
 pub use crate::setting::InvalidSetting;
-use crate::setting::{MAX_BAND_MM, MAX_THICKNESS_MM, within};
+use crate::setting::{MAX_BAND_MM, thickness, within};
 use serde::{Deserialize, Serialize};
 
 /// Region fill's settings, with the one set of defaults
@@ -99,15 +99,7 @@ impl Settings {
             " mm",
             "a stroke wider than a hand",
         )?;
-        within(
-            "thickness_mm",
-            "the thickness",
-            self.thickness_mm,
-            0.0..=MAX_THICKNESS_MM,
-            true,
-            " mm",
-            "taller than any printer builds",
-        )?;
+        thickness(self.thickness_mm)?;
         within(
             "frame_mm",
             "the frame",

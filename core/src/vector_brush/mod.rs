@@ -56,7 +56,7 @@ pub use pipeline::{
 pub use portal::{Portal, portals_at};
 pub use positioning::{position_offsets, spread_offsets};
 pub use product::{make_alternatives, make_product};
-pub use settings::{ALTERNATIVES, InvalidSetting, MAX_SCALE, MAX_VARIETY, MIN_SCALE, Settings};
+pub use settings::{ALTERNATIVES, InvalidSetting, MAX_SCALE, MIN_SCALE, Settings};
 pub use shade::{ShadeSynthesisError, make_shade};
 pub use slicing::{MAX_PORTALS, SliceOptions, SlicingMode, cut_positions, topology_events};
 pub use solver::{

@@ -8,7 +8,7 @@ use serde::{Deserialize, Serialize};
 use super::{CORNER_RADIUS, SliceOptions, SlicingMode, Target};
 use crate::curve::Curve;
 pub use crate::setting::InvalidSetting;
-use crate::setting::{MAX_BAND_MM, MAX_THICKNESS_MM, MIN_BAND_MM, within};
+use crate::setting::{MAX_BAND_MM, band, thickness, variety, within};
 
 /// The vector brush's settings, with the one documented set of defaults
 /// (`docs/vector-brush.md` lists them).
@@ -74,9 +74,6 @@ pub const MIN_SCALE: f64 = 0.05;
 /// The largest exemplar scale (relative to fitting its height to the band).
 pub const MAX_SCALE: f64 = 10.0;
 
-/// The largest variety weight: at 10 already the fit hardly counts.
-pub const MAX_VARIETY: f64 = 100.0;
-
 /// The most cut lines uniform slicing takes: more cuts pieces thinner than
 /// a nozzle from any exemplar.
 pub const MAX_UNIFORM_CUTS: usize = 256;
@@ -108,15 +105,7 @@ impl Default for Settings {
 impl Settings {
     /// Checks every number is in range.
     pub fn validate(&self) -> Result<(), InvalidSetting> {
-        within(
-            "band_mm",
-            "the band",
-            self.band_mm,
-            MIN_BAND_MM..=MAX_BAND_MM,
-            false,
-            " mm",
-            "wider than any printer's bed",
-        )?;
+        band(self.band_mm)?;
         within(
             "scale",
             "the scale",
@@ -126,16 +115,8 @@ impl Settings {
             "",
             "an exemplar many bands tall, cut to one band",
         )?;
-        within(
-            "thickness_mm",
-            "the thickness",
-            self.thickness_mm,
-            0.0..=MAX_THICKNESS_MM,
-            true,
-            " mm",
-            "taller than any printer builds",
-        )?;
-        within("variety", "variety", self.variety, 0.0..=MAX_VARIETY, false, "", "variety outweighing the fit")?;
+        thickness(self.thickness_mm)?;
+        variety(self.variety)?;
         within(
             "min_portal_mm",
             "the minimum portal",
