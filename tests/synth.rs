@@ -303,3 +303,29 @@ fn a_hand_drawn_ellipse_in_svg_is_followed_as_drawn_and_flips() {
     let (a, b) = (std::fs::read_to_string(&plain).unwrap(), std::fs::read_to_string(&flipped).unwrap());
     assert_ne!(a, b, "--flip changed nothing");
 }
+
+#[test]
+fn a_loop_refusal_says_what_does_work_and_that_does_work() {
+    // Real ornaments that make one part along a line, refused round a loop
+    // with the pattern closed all around it.
+    let corpus = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../../shared/corpus/ornaments");
+    let dir = tempdir("loop-refusal");
+    for name in ["pgfhan28.svg", "pgfhan36.svg"] {
+        let exemplar = corpus.join(name);
+        let out = tracery().args(["synth", "--along", "circle:20", "--exemplar"]).arg(&exemplar).output().unwrap();
+        let err = String::from_utf8_lossy(&out.stderr);
+        assert_eq!(out.status.code(), Some(1), "{name}: {err}");
+        assert!(err.contains("round this loop") && err.contains("turn off 'closed pattern'"), "{name}: {err}");
+        // The suggestion works: one part, as asked.
+        let report = dir.join(format!("{name}.json"));
+        let out = tracery()
+            .args(["synth", "--along", "circle:20", "--closed-pattern", "false", "--exemplar"])
+            .arg(&exemplar)
+            .arg("--report")
+            .arg(&report)
+            .output()
+            .unwrap();
+        assert!(out.status.success(), "{name}: {}", String::from_utf8_lossy(&out.stderr));
+        assert_eq!(field(&std::fs::read_to_string(&report).unwrap(), "components"), "1", "{name}");
+    }
+}

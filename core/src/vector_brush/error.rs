@@ -98,6 +98,29 @@ pub enum Unmet {
     ClosedPattern,
     /// No sequence of pieces closes within the curve's length (±50%).
     NoClosingSequence,
+    /// A target (components, holes or both) that this exemplar meets, but
+    /// not round this loop: what does work is said.
+    OnLoop {
+        /// The target that is not met on the loop.
+        unmet: Box<Unmet>,
+        /// Whether the same targets are met on the loop with the pattern
+        /// not running all around it ('closed pattern' off).
+        without_closed_pattern: bool,
+        /// Whether they are met along an open curve of the same length.
+        along_open_curve: bool,
+    },
+}
+
+impl Unmet {
+    /// The targets not met, as words ("exactly 1 component(s)").
+    fn targets(&self) -> Option<String> {
+        match self {
+            Unmet::Components(t) => Some(format!("{t} component(s)")),
+            Unmet::Holes(t) => Some(format!("{t} hole(s)")),
+            Unmet::Combination { components, holes } => Some(format!("{components} component(s) with {holes} hole(s)")),
+            _ => None,
+        }
+    }
 }
 
 impl std::fmt::Display for Unmet {
@@ -122,6 +145,17 @@ impl std::fmt::Display for Unmet {
                 f,
                 "no sequence of this exemplar's pieces closes within the curve's length; make the curve longer or cut the exemplar differently"
             ),
+            Unmet::OnLoop { unmet, without_closed_pattern, along_open_curve } => {
+                let targets = unmet.targets().unwrap_or_else(|| unmet.to_string());
+                let works = match (without_closed_pattern, along_open_curve) {
+                    (true, _) => "turn off 'closed pattern' and it can",
+                    (false, true) => {
+                        "along an open curve of the same length it can: draw an open curve, or relax the target"
+                    }
+                    (false, false) => "relax the target",
+                };
+                write!(f, "{targets} cannot be made round this loop from this exemplar; {works}")
+            }
         }
     }
 }

@@ -31,14 +31,25 @@ pub(super) fn diagnose(set: &PieceSet, options: &SolveOptions, control: &Control
     }
     let closed = options.closed_pattern;
     let components_ok = options.components == Target::Any || feasible(options.components, Target::Any, closed)?;
-    if !components_ok {
-        return Ok(Unmet::Components(options.components));
+    let unmet = if !components_ok {
+        Unmet::Components(options.components)
+    } else if !(options.holes == Target::Any || feasible(Target::Any, options.holes, closed)?) {
+        Unmet::Holes(options.holes)
+    } else {
+        Unmet::Combination { components: options.components, holes: options.holes }
+    };
+    if options.curve != CurveKind::Closed {
+        return Ok(unmet);
     }
-    let holes_ok = options.holes == Target::Any || feasible(Target::Any, options.holes, closed)?;
-    if !holes_ok {
-        return Ok(Unmet::Holes(options.holes));
+    // On a loop, say what does work: the exemplar may meet the targets
+    // with the pattern not closed round the loop, or along an open curve.
+    let without_closed_pattern = closed && feasible(options.components, options.holes, false)?;
+    let open = SolveOptions { curve: CurveKind::Open, closed_pattern: false, variety: 0.0, seed: 0, ..options.clone() };
+    let along_open_curve = !without_closed_pattern && exists(set, &open, control).unwrap_or(false);
+    if !(without_closed_pattern || along_open_curve) {
+        return Ok(unmet);
     }
-    Ok(Unmet::Combination { components: options.components, holes: options.holes })
+    Ok(Unmet::OnLoop { unmet: Box::new(unmet), without_closed_pattern, along_open_curve })
 }
 
 /// Whether some pattern meets `options`. Where the exhaustive search
