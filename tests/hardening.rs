@@ -148,6 +148,28 @@ fn hostile_files_are_refused_in_words_a_person_reads() {
     assert_eq!(out.status.code(), Some(1));
     let err = check_one_line(&args, &out);
     assert!(err.contains("is not a region") || err.contains("units"), "{err}");
+
+    // Found by fuzzing: an arc of radius 1e123 in a path made usvg, turning
+    // arcs into curves, ask for 7.5 GB, and the process was killed.
+    let arc = dir.join("arc.svg");
+    std::fs::write(
+        &arc,
+        r#"<svg xmlns="http://www.w3.org/2000/svg" viewBox="0 0 160 40"><path d="M148.5,20 A3.5,1e123.5 0 1 1 155.5,20 Z"/></svg>"#,
+    )
+    .unwrap();
+    let arc = arc.to_str().unwrap();
+    let (along, region) = (format!("svg:{arc}"), format!("svg:{arc}"));
+    for args in [
+        vec!["synth", "--exemplar", arc, "--along", "circle:20"],
+        vec!["synth", "--exemplar", "lace", "--along", &along],
+        vec!["fill", "--exemplar", "vine", "--region", &region],
+        vec!["fill", "--exemplar", arc, "--region", "rect:40x40"],
+    ] {
+        let out = tracery().args(&args).arg("--svg").arg(dir.join("o.svg")).output().unwrap();
+        assert_eq!(out.status.code(), Some(1), "{args:?}");
+        let err = check_one_line(&args, &out);
+        assert!(err.contains("too large to draw (1e123"), "{args:?}: {err}");
+    }
 }
 
 /// CRC-32 (PNG's) of `bytes`.

@@ -29,7 +29,16 @@ fn cases() -> u32 {
 /// fresh seeds until `TRACERY_FUZZ_SECONDS` have passed when that is set.
 /// The seconds are wall-clock time for the whole file: shared among its
 /// targets, which run side by side on the test threads.
-fn fuzz<S: Strategy>(name: &str, strategy: S, property: impl Fn(S::Value)) {
+///
+/// With `TRACERY_FUZZ_LAST=DIR`, each input is written to `DIR/NAME` before
+/// it is tried: when the process is killed (out of memory), the input that
+/// did it is there.
+fn fuzz<S: Strategy>(name: &str, strategy: S, property: impl Fn(S::Value))
+where
+    S::Value: std::fmt::Debug,
+{
+    let last =
+        std::env::var_os("TRACERY_FUZZ_LAST").map(|dir| std::path::PathBuf::from(dir).join(name.replace('/', "-")));
     let seconds: u64 = std::env::var("TRACERY_FUZZ_SECONDS").ok().and_then(|s| s.parse().ok()).unwrap_or(0);
     let threads = std::env::var("RUST_TEST_THREADS")
         .ok()
@@ -41,6 +50,9 @@ fn fuzz<S: Strategy>(name: &str, strategy: S, property: impl Fn(S::Value)) {
         let config = Config { cases: cases(), failure_persistence: None, ..Config::default() };
         let mut runner = TestRunner::new(config);
         if let Err(e) = runner.run(&strategy, |value| {
+            if let Some(last) = &last {
+                let _ = std::fs::write(last, format!("{value:?}"));
+            }
             property(value);
             Ok(())
         }) {

@@ -45,8 +45,7 @@ fn has_physical_size(data: &[u8]) -> bool {
 /// assert!((points[0].distance(points[1]) - 80.0).abs() < 1e-3);
 /// ```
 pub fn first_path_points(data: &[u8]) -> Result<Vec<DVec2>, CurveError> {
-    let tree = usvg::Tree::from_data(data, &crate::svg_input::options())
-        .map_err(|e| CurveError::NotSvg(crate::svg_input::describe(&e)))?;
+    let tree = crate::svg_input::parse(data).map_err(CurveError::NotSvg)?;
     fn first(group: &usvg::Group) -> Option<&usvg::Path> {
         group.children().iter().find_map(|node| match node {
             usvg::Node::Group(g) => first(g),
@@ -106,8 +105,7 @@ pub struct SvgShape {
 /// assert!(shapes[1].filled && shapes[1].closed);
 /// ```
 pub fn svg_shapes(data: &[u8], tolerance_mm: f64) -> Result<Vec<SvgShape>, CurveError> {
-    let tree = usvg::Tree::from_data(data, &crate::svg_input::options())
-        .map_err(|e| CurveError::NotSvg(crate::svg_input::describe(&e)))?;
+    let tree = crate::svg_input::parse(data).map_err(CurveError::NotSvg)?;
     let scale = if has_physical_size(data) { MM_PER_PX } else { 1.0 };
     // The tolerance is absolute: a drawing kilometres across would be
     // flattened into billions of points. Checked before flattening.

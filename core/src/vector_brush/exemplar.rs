@@ -123,8 +123,7 @@ impl Exemplar {
 
     /// Loads an exemplar from SVG bytes (see [`Exemplar::from_svg_str`]).
     pub fn from_svg_data(name: impl Into<String>, data: &[u8], options: &LoadOptions) -> Result<Self, ExemplarError> {
-        let tree = usvg::Tree::from_data(data, &crate::svg_input::options())
-            .map_err(|e| ExemplarError::NotSvg(crate::svg_input::describe(&e)))?;
+        let tree = crate::svg_input::parse(data).map_err(ExemplarError::NotSvg)?;
         let bbox = tree.root().abs_bounding_box();
         let diagonal = f64::from(bbox.width()).hypot(f64::from(bbox.height()));
         if !diagonal.is_finite() || diagonal > options.max_size * 2.0 {
