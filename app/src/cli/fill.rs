@@ -1,7 +1,7 @@
 //! `tracery fill`: region fill with a curve texture. Every flag left out
 //! takes its value from [`Settings::default`], the same defaults the app uses.
 
-use anyhow::{Result, bail};
+use anyhow::{Context, Result, bail};
 use clap::Parser;
 use tracery_core::print::finish;
 use tracery_core::region_fill::{CurveExemplar, Settings, make_product, parse_region};
@@ -72,7 +72,7 @@ pub fn run(args: FillArgs, progress: &Progress) -> Result<()> {
     args.output.svg_options()?;
     let print = args.output.print.settings()?;
     let exemplar = CurveExemplar::load(&args.exemplar)?;
-    let region = parse_region(&args.region)?;
+    let region = parse_region(&args.region).context("--region")?;
     let product = make_product(&exemplar, &region, &settings, &progress.control())?;
     let product = finish(product, &print);
     write_outputs("fill", &exemplar.name, &args.region, &args.output, &product, progress)

@@ -109,7 +109,7 @@ pub fn run(args: QuiltArgs, progress: &Progress) -> Result<()> {
         if args.field.is_some() || args.direction.is_some() {
             bail!("a plane's texture follows the plane's axes: --field and --direction are for models");
         }
-        make_product(&swatch, parse_base(&args.base)?, &settings, &progress.control())?
+        make_product(&swatch, parse_base(&args.base).context("--base")?, &settings, &progress.control())?
     } else {
         let surface = SurfaceMesh::new(super::surface::load_base(&args.base)?)?;
         let strokes = match &args.field {

@@ -84,7 +84,7 @@ pub fn run(args: RasterArgs, progress: &Progress) -> Result<()> {
     let rings = args.output.print.jump_rings()?;
     let exemplar = load_raster_exemplar(&args.exemplar)?;
     let spec = args.output.along()?;
-    let mut along = Along::parse(spec)?;
+    let mut along = Along::parse(spec).context("--along")?;
     if let Along::Curve(curve) = &along
         && args.closed
         && !curve.is_closed()

@@ -139,7 +139,7 @@ pub fn run(args: SynthArgs, progress: &Progress) -> Result<()> {
     let rings = args.output.print.jump_rings()?;
     let exemplar = load_exemplar(&args.exemplar)?;
     let spec = args.output.along()?;
-    let along = Along::parse(spec)?;
+    let along = Along::parse(spec).context("--along")?;
     let product = make_product(&exemplar, &along, &settings, &progress.control())?;
     let product = finish(add_jump_rings(product, &rings)?, &print);
     write_outputs("synth", &exemplar.name, spec, &args.output, &product, progress)
