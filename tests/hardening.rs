@@ -305,6 +305,7 @@ fn a_run_killed_at_any_moment_leaves_the_old_file_or_the_whole_new_one() {
             std::fs::read_dir(&*dir).unwrap().map(|e| e.unwrap().file_name().to_string_lossy().into_owned()).collect();
         assert_eq!(names, ["o.stl"], "kill {k} left a temporary file");
     }
+    eprintln!("{kills} kills over a {whole_run:?} run: {} left the old file, {} the new one", outcomes[0], outcomes[1]);
     assert!(outcomes[0] > 0, "no kill landed before the write: {outcomes:?}");
 }
 
