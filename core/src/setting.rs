@@ -150,3 +150,16 @@ pub fn band(x: f64) -> Result<(), InvalidSetting> {
 pub fn variety(x: f64) -> Result<(), InvalidSetting> {
     within("variety", "variety", x, 0.0..=MAX_VARIETY, false, "", "variety outweighing the fit")
 }
+
+/// A count as a person reads it: a count that saturated (`usize::MAX`,
+/// from a product or a cast of something without bound) is said in words,
+/// never as the integer it wrapped to.
+///
+/// ```
+/// use tracery_core::setting::count;
+/// assert_eq!(count(42), "42");
+/// assert_eq!(count(usize::MAX), "too many to count");
+/// ```
+pub fn count(n: usize) -> String {
+    if n == usize::MAX { "too many to count".into() } else { n.to_string() }
+}

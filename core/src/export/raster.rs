@@ -28,7 +28,11 @@ pub enum RenderError {
     #[error("nothing to render: the result is empty")]
     Empty,
     /// The picture would be too large.
-    #[error("a render of {width_px} x {height_px} pixels is too large; lower the resolution (at most {max} pixels)")]
+    #[error(
+        "a render of {} x {} pixels is too large; lower the resolution (at most {max} pixels)",
+        crate::setting::count(*width_px),
+        crate::setting::count(*height_px)
+    )]
     TooLarge {
         /// Width asked for.
         width_px: usize,

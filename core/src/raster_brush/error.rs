@@ -79,7 +79,8 @@ pub enum RasterError {
     },
     /// The ribbon is too large to check at the exemplar's resolution.
     #[error(
-        "the ribbon would need {cells} cells to check for fold-overs (at most {max}); lower the scale or shorten the curve"
+        "the ribbon would need {} cells to check for fold-overs (at most {max}); lower the scale or shorten the curve",
+        crate::setting::count(*cells)
     )]
     TooLarge {
         /// Cells needed.
